@@ -1,0 +1,19 @@
+# System dependencies, all from Debian 12 packages (see setup.sh for the list).
+find_package(Eigen3 3.4 REQUIRED NO_MODULE)
+find_package(PkgConfig REQUIRED)
+find_package(GTest REQUIRED)
+find_package(nlohmann_json 3.10 REQUIRED)
+find_package(assimp REQUIRED)
+
+# Bullet: module mode only. The CONFIG package shipped by Debian has relative
+# paths and names a BulletInverseDynamics library that is not installed.
+find_package(Bullet REQUIRED MODULE)
+if(NOT TARGET colonosim::bullet)
+  add_library(colonosim::bullet INTERFACE IMPORTED)
+  target_include_directories(colonosim::bullet INTERFACE ${BULLET_INCLUDE_DIRS})
+  target_link_libraries(colonosim::bullet INTERFACE ${BULLET_LIBRARIES})
+endif()
+
+if(COLONOSIM_BUILD_BENCH)
+  find_package(benchmark REQUIRED)
+endif()
