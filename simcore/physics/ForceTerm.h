@@ -1,0 +1,68 @@
+#pragma once
+/// \file
+/// The one interface every tissue force shares (after Bullet's
+/// btDeformableLagrangianForce): add the elastic force, add the damping
+/// force, add the force differentials for the implicit solve, and report the
+/// Gershgorin row sums that bound the highest natural frequency.
+///
+/// Sign convention: K = df/dx and D = df/dv (both negative semi-definite for
+/// springs). For the stable explicit step, omega_max^2 <= max_i kRow_i / m_i
+/// (Gershgorin on M^-1 K), where kRow_i sums the norms of the 3x3 blocks of
+/// row i of K, diagonal and off-diagonal (reference/physical-parameters.md).
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <string_view>
+#include <vector>
+
+namespace colonosim::physics {
+
+using Positions = Eigen::Matrix3Xd;   ///< one column per node, m
+using Velocities = Eigen::Matrix3Xd;  ///< m/s
+using Forces = Eigen::Matrix3Xd;      ///< N
+
+class ForceTerm {
+public:
+    virtual ~ForceTerm() = default;
+
+    [[nodiscard]] virtual std::string_view name() const = 0;
+
+    /// f += elastic (and external) force at positions x.
+    virtual void addForce(const Positions& x, Forces& f) const = 0;
+    /// f += damping force at (x, v).
+    virtual void addDampingForce(const Positions& x, const Velocities& v, Forces& f) const = 0;
+    /// f += elastic + damping force. Terms override it to do one pass.
+    virtual void addForceAndDamping(const Positions& x, const Velocities& v, Forces& f) const
+    {
+        addForce(x, f);
+        addDampingForce(x, v, f);
+    }
+    /// df += K(x) dx with K = d(elastic force)/dx.
+    virtual void addStiffnessProduct(const Positions& x, const Eigen::Matrix3Xd& dx, Eigen::Matrix3Xd& df) const = 0;
+    /// df += K+(x) dx, a negative semi-definite version of K for the implicit
+    /// solve (e.g. compressed springs lose their transverse term, Choi & Ko
+    /// 2002). Defaults to the exact product.
+    virtual void addDefiniteStiffnessProduct(const Positions& x, const Eigen::Matrix3Xd& dx,
+                                             Eigen::Matrix3Xd& df) const
+    {
+        addStiffnessProduct(x, dx, df);
+    }
+    /// df += D(x) dv with D = d(damping force)/dv.
+    virtual void addDampingProduct(const Positions& x, const Eigen::Matrix3Xd& dv, Eigen::Matrix3Xd& df) const = 0;
+    /// kRow(i) += sum over j of ||K_ij|| for the worst state the term
+    /// declares (e.g. a spring's stiffness; a stiffening mesentery at its
+    /// declared maximum stretch); cRow(i) likewise for D.
+    virtual void addStiffnessBound(Eigen::VectorXd& kRow, Eigen::VectorXd& cRow) const = 0;
+    /// Potential energy of the elastic part, J (0 for non-conservative terms).
+    [[nodiscard]] virtual double potentialEnergy(const Positions& x) const = 0;
+    /// True when K and D are symmetric, so the implicit solver may include
+    /// them in its conjugate-gradient system; other terms are treated
+    /// explicitly there.
+    [[nodiscard]] virtual bool hasSymmetricJacobian() const { return true; }
+    /// The set of awake nodes changed: terms may skip elements whose nodes
+    /// all sleep. `awake` has one entry per node.
+    virtual void onActiveSetChanged(const std::vector<std::uint8_t>& awake) { (void)awake; }
+};
+
+}  // namespace colonosim::physics

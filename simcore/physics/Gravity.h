@@ -1,0 +1,44 @@
+#pragma once
+/// \file
+/// Gravity, f_i = m_i g, with g set by the patient's position on the table.
+/// In patient LPS coordinates (x left, y posterior, z superior) the downward
+/// direction is +y supine, -y prone, +x left lateral decubitus (the usual
+/// position for colonoscopy) and -x right lateral.
+
+#include "simcore/physics/ForceTerm.h"
+
+#include <string_view>
+
+namespace colonosim::physics {
+
+enum class PatientPosition { Supine, Prone, LeftLateral, RightLateral };
+
+/// Unit vector pointing down, in patient coordinates.
+[[nodiscard]] Eigen::Vector3d downDirection(PatientPosition position);
+[[nodiscard]] std::string_view patientPositionName(PatientPosition position);
+/// Parses "supine", "prone", "left_lateral", "right_lateral"; throws
+/// ParameterError naming the field, the value and the allowed values.
+[[nodiscard]] PatientPosition parsePatientPosition(std::string_view text);
+
+class Gravity final : public ForceTerm {
+public:
+    /// `masses` (kg) is copied; g in m/s^2.
+    Gravity(const Eigen::VectorXd& masses, const Eigen::Vector3d& acceleration)
+        : m_mass(masses), m_g(acceleration)
+    {
+    }
+
+    [[nodiscard]] std::string_view name() const override { return "gravity"; }
+    void addForce(const Positions& x, Forces& f) const override;
+    void addDampingForce(const Positions&, const Velocities&, Forces&) const override {}
+    void addStiffnessProduct(const Positions&, const Eigen::Matrix3Xd&, Eigen::Matrix3Xd&) const override {}
+    void addDampingProduct(const Positions&, const Eigen::Matrix3Xd&, Eigen::Matrix3Xd&) const override {}
+    void addStiffnessBound(Eigen::VectorXd&, Eigen::VectorXd&) const override {}
+    [[nodiscard]] double potentialEnergy(const Positions& x) const override;
+
+private:
+    Eigen::VectorXd m_mass;
+    Eigen::Vector3d m_g;
+};
+
+}  // namespace colonosim::physics

@@ -1,0 +1,121 @@
+#include "simcore/physics/SpringCalibration.h"
+
+#include "simcore/physics/StaticSolver.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace colonosim::physics {
+
+geometry::TriangleMesh makeStraightTube(const TubeResolution& tube)
+{
+    const int n = tube.nodesPerRing;
+    geometry::TriangleMesh mesh;
+    mesh.vertices.resize(3, static_cast<Eigen::Index>(n) * tube.rings);
+    for (int r = 0; r < tube.rings; ++r) {
+        for (int k = 0; k < n; ++k) {
+            const double theta = 2.0 * std::numbers::pi * k / n;
+            mesh.vertices.col(r * n + k) =
+                Eigen::Vector3d(tube.radius * std::cos(theta), tube.radius * std::sin(theta), r * tube.ringSpacing);
+        }
+    }
+    for (int r = 0; r + 1 < tube.rings; ++r) {
+        for (int k = 0; k < n; ++k) {
+            const int v00 = r * n + k;
+            const int v01 = r * n + (k + 1) % n;
+            const int v10 = (r + 1) * n + k;
+            const int v11 = (r + 1) * n + (k + 1) % n;
+            mesh.triangles.push_back({v00, v01, v11});
+            mesh.triangles.push_back({v00, v11, v10});
+        }
+    }
+    return mesh;
+}
+
+namespace {
+struct TubeBody {
+    TissueBody body;
+    geometry::TriangleMesh mesh;
+};
+
+TubeBody makeTubeBody(const TubeResolution& tube, const TissueParameters& tissue, const StiffnessCalibration& factors)
+{
+    geometry::TriangleMesh mesh = makeStraightTube(tube);
+    const std::vector<Eigen::Vector3d> axis(static_cast<size_t>(mesh.numVertices()), Eigen::Vector3d::UnitZ());
+    TubeBody tb{TissueBody(mesh.vertices, wallNodeMasses(mesh, tissue)), mesh};
+    auto springs = std::make_unique<SpringSet>("wall");
+    addWallSprings(mesh, axis, tissue, factors, *springs);
+    tb.body.addForceTerm(std::move(springs));
+    for (int k = 0; k < tube.nodesPerRing; ++k) {
+        tb.body.setFixed(k, true);
+    }
+    return tb;
+}
+
+double meanOfRing(const Positions& x, const TubeResolution& tube, int ring, bool radial)
+{
+    double sum = 0.0;
+    for (int k = 0; k < tube.nodesPerRing; ++k) {
+        const Eigen::Vector3d p = x.col(ring * tube.nodesPerRing + k);
+        sum += radial ? p.head<2>().norm() : p.z();
+    }
+    return sum / tube.nodesPerRing;
+}
+}  // namespace
+
+MeasuredStiffness measureTubeStiffness(const TubeResolution& tube, const TissueParameters& tissue,
+                                       const StiffnessCalibration& factors)
+{
+    const double et = tissue.wallYoungModulus * tissue.wallThickness;
+    const double circumference = 2.0 * std::numbers::pi * tube.radius;
+    constexpr double kStrain = 1e-4;  // small: the linear response
+    MeasuredStiffness measured;
+    const int r1 = tube.rings / 3;
+    const int r2 = 2 * tube.rings / 3;
+
+    {
+        TubeBody tb = makeTubeBody(tube, tissue, factors);
+        const double load = kStrain * circumference * et;
+        for (int k = 0; k < tube.nodesPerRing; ++k) {
+            tb.body.applyExternalForce((tube.rings - 1) * tube.nodesPerRing + k,
+                                       Eigen::Vector3d(0.0, 0.0, load / tube.nodesPerRing));
+        }
+        const Positions rest = tb.body.positions();
+        solveStaticEquilibrium(tb.body, 1e-9 * load);
+        const Positions& x = tb.body.positions();
+        const double stretched = meanOfRing(x, tube, r2, false) - meanOfRing(x, tube, r1, false);
+        const double original = meanOfRing(rest, tube, r2, false) - meanOfRing(rest, tube, r1, false);
+        measured.axial = load / (circumference * (stretched / original - 1.0));
+    }
+    {
+        TubeBody tb = makeTubeBody(tube, tissue, factors);
+        const double pressure = kStrain * et / tube.radius;
+        tb.body.addForceTerm(std::make_unique<InsufflationPressure>(tb.mesh.triangles, pressure, tb.mesh.vertices));
+        const Positions rest = tb.body.positions();
+        solveStaticEquilibrium(tb.body, 1e-9 * pressure * tube.radius * tube.ringSpacing);
+        const int middle = tube.rings / 2;
+        const double r0 = meanOfRing(rest, tube, middle, true);
+        const double dr = meanOfRing(tb.body.positions(), tube, middle, true) - r0;
+        measured.hoop = pressure * r0 * r0 / dr;
+    }
+    return measured;
+}
+
+CalibrationReport calibrateWallStiffness(const TubeResolution& tube, const TissueParameters& tissue, double tolerance)
+{
+    const double et = tissue.wallYoungModulus * tissue.wallThickness;
+    CalibrationReport report;
+    for (report.iterations = 1; report.iterations <= 30; ++report.iterations) {
+        const MeasuredStiffness m = measureTubeStiffness(tube, tissue, report.factors);
+        report.axialStiffnessError = m.axial / et - 1.0;
+        report.hoopStiffnessError = m.hoop / et - 1.0;
+        if (std::abs(report.axialStiffnessError) < tolerance && std::abs(report.hoopStiffnessError) < tolerance) {
+            break;
+        }
+        report.factors.axial /= 1.0 + report.axialStiffnessError;
+        report.factors.circumferential /= 1.0 + report.hoopStiffnessError;
+    }
+    return report;
+}
+
+}  // namespace colonosim::physics

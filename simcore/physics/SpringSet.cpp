@@ -1,0 +1,200 @@
+#include "simcore/physics/SpringSet.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace colonosim::physics {
+
+int SpringSet::add(int i, int j, double restLength, double stiffness, double damping, SpringFamily family)
+{
+    if (i == j || i < 0 || j < 0) {
+        throw std::invalid_argument("SpringSet::add: a spring needs two distinct nodes");
+    }
+    if (!(restLength >= 0.0) || !(stiffness >= 0.0) || !(damping >= 0.0) || !std::isfinite(restLength) ||
+        !std::isfinite(stiffness) || !std::isfinite(damping)) {
+        throw std::invalid_argument("SpringSet::add: rest length, stiffness and damping must be finite and >= 0");
+    }
+    m_i.push_back(i);
+    m_j.push_back(j);
+    m_rest.push_back(restLength);
+    m_k.push_back(stiffness);
+    m_c.push_back(damping);
+    m_family.push_back(family);
+    const int s = numSprings() - 1;
+    const auto awake = [this](int node) {
+        return m_awake.empty() || static_cast<size_t>(node) >= m_awake.size() || m_awake[static_cast<size_t>(node)];
+    };
+    if (awake(i) || awake(j)) {
+        m_active.push_back(s);
+    }
+    return s;
+}
+
+void SpringSet::remove(int s)
+{
+    const auto last = static_cast<size_t>(numSprings() - 1);
+    const auto slot = static_cast<size_t>(s);
+    m_i[slot] = m_i[last];
+    m_j[slot] = m_j[last];
+    m_rest[slot] = m_rest[last];
+    m_k[slot] = m_k[last];
+    m_c[slot] = m_c[last];
+    m_family[slot] = m_family[last];
+    m_i.pop_back();
+    m_j.pop_back();
+    m_rest.pop_back();
+    m_k.pop_back();
+    m_c.pop_back();
+    m_family.pop_back();
+    onActiveSetChanged(m_awake);
+}
+
+void SpringSet::setStiffness(int s, double stiffness, double damping)
+{
+    m_k[static_cast<size_t>(s)] = stiffness;
+    m_c[static_cast<size_t>(s)] = damping;
+}
+
+void SpringSet::addForce(const Positions& x, Forces& f) const
+{
+    for (const int s : m_active) {
+        const auto e = static_cast<size_t>(s);
+        const Eigen::Vector3d d = x.col(m_j[e]) - x.col(m_i[e]);
+        const double l = d.norm();
+        if (l < kMinLength) {
+            continue;
+        }
+        const Eigen::Vector3d fs = (m_k[e] * (l - m_rest[e]) / l) * d;
+        f.col(m_i[e]) += fs;
+        f.col(m_j[e]) -= fs;
+    }
+}
+
+void SpringSet::addDampingForce(const Positions& x, const Velocities& v, Forces& f) const
+{
+    for (const int s : m_active) {
+        const auto e = static_cast<size_t>(s);
+        const Eigen::Vector3d d = x.col(m_j[e]) - x.col(m_i[e]);
+        const double l2 = d.squaredNorm();
+        if (l2 < kMinLength * kMinLength) {
+            continue;
+        }
+        const Eigen::Vector3d fs = (m_c[e] * d.dot(v.col(m_j[e]) - v.col(m_i[e])) / l2) * d;
+        f.col(m_i[e]) += fs;
+        f.col(m_j[e]) -= fs;
+    }
+}
+
+void SpringSet::addForceAndDamping(const Positions& x, const Velocities& v, Forces& f) const
+{
+    const int* a = m_i.data();
+    const int* b = m_j.data();
+    for (const int s : m_active) {
+        const auto e = static_cast<size_t>(s);
+        const int i = a[e];
+        const int j = b[e];
+        const Eigen::Vector3d d = x.col(j) - x.col(i);
+        const double l2 = d.squaredNorm();
+        if (l2 < kMinLength * kMinLength) {
+            continue;
+        }
+        const double invL = 1.0 / std::sqrt(l2);
+        const double relativeSpeed = d.dot(v.col(j) - v.col(i)) * invL;
+        const double tension = m_k[e] * (l2 * invL - m_rest[e]) + m_c[e] * relativeSpeed;
+        const Eigen::Vector3d fs = (tension * invL) * d;
+        f.col(i) += fs;
+        f.col(j) -= fs;
+    }
+}
+
+template <bool Definite>
+void SpringSet::stiffnessProduct(const Positions& x, const Eigen::Matrix3Xd& dx, Eigen::Matrix3Xd& df) const
+{
+    for (const int s : m_active) {
+        const auto e = static_cast<size_t>(s);
+        const Eigen::Vector3d d = x.col(m_j[e]) - x.col(m_i[e]);
+        const double l = d.norm();
+        if (l < kMinLength) {
+            continue;
+        }
+        const Eigen::Vector3d u = d / l;
+        const Eigen::Vector3d r = dx.col(m_j[e]) - dx.col(m_i[e]);
+        const double axial = u.dot(r);
+        double transverse = 1.0 - m_rest[e] / l;
+        if constexpr (Definite) {
+            transverse = std::max(transverse, 0.0);
+        }
+        // K_e r = k [(1 - L/l)(r - u u.r) + u u.r]
+        const Eigen::Vector3d kr = m_k[e] * (transverse * (r - axial * u) + axial * u);
+        df.col(m_i[e]) += kr;
+        df.col(m_j[e]) -= kr;
+    }
+}
+
+void SpringSet::addStiffnessProduct(const Positions& x, const Eigen::Matrix3Xd& dx, Eigen::Matrix3Xd& df) const
+{
+    stiffnessProduct<false>(x, dx, df);
+}
+
+void SpringSet::addDefiniteStiffnessProduct(const Positions& x, const Eigen::Matrix3Xd& dx,
+                                            Eigen::Matrix3Xd& df) const
+{
+    stiffnessProduct<true>(x, dx, df);
+}
+
+void SpringSet::addDampingProduct(const Positions& x, const Eigen::Matrix3Xd& dv, Eigen::Matrix3Xd& df) const
+{
+    for (const int s : m_active) {
+        const auto e = static_cast<size_t>(s);
+        const Eigen::Vector3d d = x.col(m_j[e]) - x.col(m_i[e]);
+        const double l2 = d.squaredNorm();
+        if (l2 < kMinLength * kMinLength) {
+            continue;
+        }
+        const Eigen::Vector3d r = dv.col(m_j[e]) - dv.col(m_i[e]);
+        const Eigen::Vector3d dr = (m_c[e] * d.dot(r) / l2) * d;
+        df.col(m_i[e]) += dr;
+        df.col(m_j[e]) -= dr;
+    }
+}
+
+void SpringSet::addStiffnessBound(Eigen::VectorXd& kRow, Eigen::VectorXd& cRow) const
+{
+    // ||K_e|| = k max(1, |1 - L/l|); the a-priori bound assumes l >= L/2 (no
+    // spring compressed to less than half its rest length), where it is k.
+    for (size_t e = 0; e < m_i.size(); ++e) {
+        kRow[m_i[e]] += 2.0 * m_k[e];
+        kRow[m_j[e]] += 2.0 * m_k[e];
+        cRow[m_i[e]] += 2.0 * m_c[e];
+        cRow[m_j[e]] += 2.0 * m_c[e];
+    }
+}
+
+double SpringSet::potentialEnergy(const Positions& x) const
+{
+    double energy = 0.0;
+    for (size_t e = 0; e < m_i.size(); ++e) {
+        const double stretch = (x.col(m_j[e]) - x.col(m_i[e])).norm() - m_rest[e];
+        energy += 0.5 * m_k[e] * stretch * stretch;
+    }
+    return energy;
+}
+
+void SpringSet::onActiveSetChanged(const std::vector<std::uint8_t>& awake)
+{
+    m_awake = awake;
+    m_active.clear();
+    m_active.reserve(m_i.size());
+    for (size_t e = 0; e < m_i.size(); ++e) {
+        const auto awakeNode = [&](int node) {
+            return m_awake.empty() || static_cast<size_t>(node) >= m_awake.size() ||
+                   m_awake[static_cast<size_t>(node)] != 0;
+        };
+        if (awakeNode(m_i[e]) || awakeNode(m_j[e])) {
+            m_active.push_back(static_cast<int>(e));
+        }
+    }
+}
+
+}  // namespace colonosim::physics

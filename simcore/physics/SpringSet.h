@@ -1,0 +1,70 @@
+#pragma once
+/// \file
+/// Linear springs with axial damping between node pairs, in flat arrays.
+///
+/// For a spring (i, j) with d = x_j - x_i, l = |d|, u = d / l, rest length L,
+/// stiffness k (N/m) and damping c (N s/m):
+///   f_i = [k (l - L) + c u.(v_j - v_i)] u,  f_j = -f_i.
+/// Stiffness block (df_i/dx_j): K_e = k [(1 - L/l)(I - u u^T) + u u^T], with
+/// df_i/dx_i = -K_e. Damping block: D_e = c u u^T, likewise.
+/// Structural, shear and bending springs (the NASA paper's "torsion between
+/// adjacent triangles") are all of this kind; `family` tags each for calibration.
+/// Springs shorter than kMinLength (1e-12 m) have no direction and exert no force.
+
+#include "simcore/physics/ForceTerm.h"
+
+#include <string>
+
+namespace colonosim::physics {
+
+enum class SpringFamily : std::uint8_t { Structural, Shear, Bending, Lesion };
+
+class SpringSet final : public ForceTerm {
+public:
+    static constexpr double kMinLength = 1e-12;  ///< m
+
+    explicit SpringSet(std::string name = "springs") : m_name(std::move(name)) {}
+
+    /// Adds a spring; returns its index. k in N/m, c in N s/m, L in m.
+    int add(int i, int j, double restLength, double stiffness, double damping,
+            SpringFamily family = SpringFamily::Structural);
+    /// Removes spring `s` by moving the last spring into its slot (O(1)).
+    void remove(int s);
+
+    [[nodiscard]] int numSprings() const { return static_cast<int>(m_i.size()); }
+    [[nodiscard]] int nodeA(int s) const { return m_i[static_cast<size_t>(s)]; }
+    [[nodiscard]] int nodeB(int s) const { return m_j[static_cast<size_t>(s)]; }
+    [[nodiscard]] double restLength(int s) const { return m_rest[static_cast<size_t>(s)]; }
+    [[nodiscard]] double stiffness(int s) const { return m_k[static_cast<size_t>(s)]; }
+    [[nodiscard]] double damping(int s) const { return m_c[static_cast<size_t>(s)]; }
+    [[nodiscard]] SpringFamily family(int s) const { return m_family[static_cast<size_t>(s)]; }
+    void setStiffness(int s, double stiffness, double damping);
+
+    [[nodiscard]] std::string_view name() const override { return m_name; }
+    void addForce(const Positions& x, Forces& f) const override;
+    void addDampingForce(const Positions& x, const Velocities& v, Forces& f) const override;
+    void addForceAndDamping(const Positions& x, const Velocities& v, Forces& f) const override;
+    void addStiffnessProduct(const Positions& x, const Eigen::Matrix3Xd& dx, Eigen::Matrix3Xd& df) const override;
+    void addDefiniteStiffnessProduct(const Positions& x, const Eigen::Matrix3Xd& dx,
+                                     Eigen::Matrix3Xd& df) const override;
+    void addDampingProduct(const Positions& x, const Eigen::Matrix3Xd& dv, Eigen::Matrix3Xd& df) const override;
+    void addStiffnessBound(Eigen::VectorXd& kRow, Eigen::VectorXd& cRow) const override;
+    [[nodiscard]] double potentialEnergy(const Positions& x) const override;
+    void onActiveSetChanged(const std::vector<std::uint8_t>& awake) override;
+
+private:
+    template <bool Definite>
+    void stiffnessProduct(const Positions& x, const Eigen::Matrix3Xd& dx, Eigen::Matrix3Xd& df) const;
+
+    std::string m_name;
+    std::vector<int> m_i;
+    std::vector<int> m_j;
+    std::vector<double> m_rest;
+    std::vector<double> m_k;
+    std::vector<double> m_c;
+    std::vector<SpringFamily> m_family;
+    std::vector<int> m_active;  ///< springs with at least one awake node
+    std::vector<std::uint8_t> m_awake;
+};
+
+}  // namespace colonosim::physics

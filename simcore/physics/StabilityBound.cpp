@@ -1,0 +1,162 @@
+#include "simcore/physics/StabilityBound.h"
+
+#include <Eigen/Dense>
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <limits>
+#include <random>
+#include <stdexcept>
+
+namespace colonosim::physics {
+
+StabilityEstimate estimateStability(const TissueBody& body)
+{
+    Eigen::VectorXd kRow;
+    Eigen::VectorXd cRow;
+    body.stiffnessBounds(kRow, cRow);
+    StabilityEstimate estimate;
+    double omega2 = 0.0;
+    estimate.betaMin = std::numeric_limits<double>::infinity();
+    for (const int i : body.integratedNodes()) {
+        const double m = body.masses()[i];
+        if (kRow[i] / m > omega2) {
+            omega2 = kRow[i] / m;
+            estimate.stiffestNode = i;
+        }
+        estimate.dampingRateMax = std::max(estimate.dampingRateMax, cRow[i] / m);
+        if (kRow[i] > 0.0) {
+            const double beta = cRow[i] / kRow[i];
+            estimate.betaMin = std::min(estimate.betaMin, beta);
+            estimate.betaMax = std::max(estimate.betaMax, beta);
+        }
+    }
+    if (!std::isfinite(estimate.betaMin)) {
+        estimate.betaMin = 0.0;
+    }
+    estimate.omegaMax = std::sqrt(omega2);
+    return estimate;
+}
+
+double amplification(IntegratorKind kind, double omega, double c, double h)
+{
+    Eigen::Matrix2d J;
+    J << 0.0, 1.0, -omega * omega, -c;
+    const Eigen::Matrix2d I = Eigen::Matrix2d::Identity();
+    Eigen::Matrix2d A = I;
+    switch (kind) {
+    case IntegratorKind::ExplicitEuler: A = I + h * J; break;
+    case IntegratorKind::SymplecticEuler:
+        A << 1.0 - h * h * omega * omega, h * (1.0 - h * c), -h * omega * omega, 1.0 - h * c;
+        break;
+    case IntegratorKind::RungeKutta4: {
+        const Eigen::Matrix2d hJ = h * J;
+        const Eigen::Matrix2d hJ2 = hJ * hJ;
+        A = I + hJ + hJ2 / 2.0 + hJ2 * hJ / 6.0 + hJ2 * hJ2 / 24.0;
+        break;
+    }
+    case IntegratorKind::BackwardEuler: A = (I - h * J).inverse(); break;
+    }
+    const std::complex<double> half(0.5 * A.trace(), 0.0);
+    const std::complex<double> root = std::sqrt(half * half - std::complex<double>(A.determinant(), 0.0));
+    return std::max(std::abs(half + root), std::abs(half - root));
+}
+
+namespace {
+bool stableAt(IntegratorKind kind, const StabilityEstimate& e, double h)
+{
+    constexpr int kSamples = 400;
+    constexpr double kSlack = 1e-10;
+    for (int s = 0; s < kSamples; ++s) {
+        const double omega = e.omegaMax * std::pow(1e-4, 1.0 - static_cast<double>(s) / (kSamples - 1));
+        const double w2 = omega * omega;
+        const double cLow = e.betaMin * w2;
+        const double cHigh = std::min(e.betaMax * w2, e.dampingRateMax);
+        for (const double c : {cLow, std::max(cLow, cHigh)}) {
+            if (amplification(kind, omega, c, h) > 1.0 + kSlack) {
+                return false;
+            }
+        }
+    }
+    return true;
+}
+}  // namespace
+
+double maxStableStep(IntegratorKind kind, const StabilityEstimate& estimate)
+{
+    if (kind == IntegratorKind::BackwardEuler || estimate.omegaMax <= 0.0) {
+        return std::numeric_limits<double>::infinity();
+    }
+    double lo = 1e-9 / estimate.omegaMax;
+    double hi = 10.0 / estimate.omegaMax;
+    if (!stableAt(kind, estimate, lo)) {
+        return 0.0;
+    }
+    for (int iteration = 0; iteration < 60; ++iteration) {
+        const double mid = 0.5 * (lo + hi);
+        (stableAt(kind, estimate, mid) ? lo : hi) = mid;
+    }
+    return lo;
+}
+
+double exactOmegaMax(const TissueBody& body)
+{
+    const std::vector<int>& nodes = body.integratedNodes();
+    const auto n = static_cast<Eigen::Index>(nodes.size());
+    if (n > 1500) {
+        throw std::invalid_argument("exactOmegaMax: too many nodes for a dense eigenproblem");
+    }
+    Eigen::MatrixXd S(3 * n, 3 * n);
+    Eigen::Matrix3Xd dx = Eigen::Matrix3Xd::Zero(3, body.numNodes());
+    Eigen::Matrix3Xd df;
+    for (Eigen::Index a = 0; a < n; ++a) {
+        for (int d = 0; d < 3; ++d) {
+            dx(d, nodes[static_cast<size_t>(a)]) = 1.0;
+            body.stiffnessProduct(body.positions(), dx, df);
+            dx(d, nodes[static_cast<size_t>(a)]) = 0.0;
+            const double ma = body.masses()[nodes[static_cast<size_t>(a)]];
+            for (Eigen::Index b = 0; b < n; ++b) {
+                const int nb = nodes[static_cast<size_t>(b)];
+                const double mb = body.masses()[nb];
+                S.block<3, 1>(3 * b, 3 * a + d) = -df.col(nb) / std::sqrt(ma * mb);
+            }
+        }
+    }
+    const Eigen::MatrixXd symmetric = 0.5 * (S + S.transpose());
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> solver(symmetric, Eigen::EigenvaluesOnly);
+    return std::sqrt(std::max(0.0, solver.eigenvalues().maxCoeff()));
+}
+
+double powerIterationOmegaMax(const TissueBody& body, int iterations)
+{
+    const std::vector<int>& nodes = body.integratedNodes();
+    const Eigen::VectorXd& mass = body.masses();
+    std::mt19937 random(12345);
+    std::normal_distribution<double> normal;
+    Eigen::Matrix3Xd q = Eigen::Matrix3Xd::Zero(3, body.numNodes());
+    for (const int i : nodes) {
+        q.col(i) = Eigen::Vector3d(normal(random), normal(random), normal(random));
+    }
+    Eigen::Matrix3Xd y;
+    Eigen::Matrix3Xd df;
+    double lambda = 0.0;
+    for (int it = 0; it < iterations; ++it) {
+        q /= q.norm();
+        y = Eigen::Matrix3Xd::Zero(3, body.numNodes());
+        for (const int i : nodes) {
+            y.col(i) = q.col(i) / std::sqrt(mass[i]);
+        }
+        body.stiffnessProduct(body.positions(), y, df);
+        Eigen::Matrix3Xd next = Eigen::Matrix3Xd::Zero(3, body.numNodes());
+        for (const int i : nodes) {
+            next.col(i) = -df.col(i) / std::sqrt(mass[i]);
+        }
+        lambda = (q.array() * next.array()).sum();
+        q = next;
+    }
+    return std::sqrt(std::max(0.0, lambda));
+}
+
+}  // namespace colonosim::physics

@@ -1,0 +1,100 @@
+#include "simcore/physics/StaticSolver.h"
+
+#include <cmath>
+
+namespace colonosim::physics {
+
+namespace {
+double maxNodalForce(const TissueBody& body, const Forces& f)
+{
+    double largest = 0.0;
+    for (const int i : body.integratedNodes()) {
+        largest = std::max(largest, f.col(i).norm());
+    }
+    return largest;
+}
+
+/// Solves (-K+) dx = rhs on the integrated nodes by PCG.
+void solveTangent(const TissueBody& body, const Forces& rhs, Eigen::Matrix3Xd& dx)
+{
+    const std::vector<int>& nodes = body.integratedNodes();
+    Eigen::VectorXd kRow;
+    Eigen::VectorXd cRow;
+    body.stiffnessBounds(kRow, cRow);
+    const auto apply = [&](const Eigen::Matrix3Xd& y, Eigen::Matrix3Xd& out) {
+        Eigen::Matrix3Xd masked = Eigen::Matrix3Xd::Zero(3, y.cols());
+        for (const int i : nodes) {
+            masked.col(i) = y.col(i);
+        }
+        body.stiffnessProduct(body.positions(), masked, out, true);
+        out = -out;
+    };
+    const auto dot = [&](const Eigen::Matrix3Xd& a, const Eigen::Matrix3Xd& b) {
+        double s = 0.0;
+        for (const int i : nodes) {
+            s += a.col(i).dot(b.col(i));
+        }
+        return s;
+    };
+    dx.setZero(3, rhs.cols());
+    Eigen::Matrix3Xd r = Eigen::Matrix3Xd::Zero(3, rhs.cols());
+    Eigen::Matrix3Xd z = r;
+    for (const int i : nodes) {
+        r.col(i) = rhs.col(i);
+        z.col(i) = r.col(i) / std::max(0.5 * kRow[i], 1e-12);
+    }
+    Eigen::Matrix3Xd p = z;
+    Eigen::Matrix3Xd ap;
+    double rz = dot(r, z);
+    const double rhsNorm = std::sqrt(dot(r, r));
+    for (int it = 0; it < 4 * static_cast<int>(3 * nodes.size()) && std::sqrt(dot(r, r)) > 1e-10 * rhsNorm; ++it) {
+        apply(p, ap);
+        const double pAp = dot(p, ap);
+        if (!(pAp > 0.0)) {
+            break;
+        }
+        const double alpha = rz / pAp;
+        for (const int i : nodes) {
+            dx.col(i) += alpha * p.col(i);
+            r.col(i) -= alpha * ap.col(i);
+            z.col(i) = r.col(i) / std::max(0.5 * kRow[i], 1e-12);
+        }
+        const double rzNext = dot(r, z);
+        for (const int i : nodes) {
+            p.col(i) = z.col(i) + (rzNext / rz) * p.col(i);
+        }
+        rz = rzNext;
+    }
+}
+}  // namespace
+
+StaticResult solveStaticEquilibrium(TissueBody& body, double forceTolerance, int maxIterations)
+{
+    StaticResult result;
+    body.velocities().setZero();
+    Forces f;
+    Eigen::Matrix3Xd dx;
+    body.computeForces(body.positions(), body.velocities(), f);
+    result.residual = maxNodalForce(body, f);
+    while (result.iterations < maxIterations && result.residual > forceTolerance) {
+        solveTangent(body, f, dx);
+        const Positions start = body.positions();
+        double stepScale = 1.0;
+        double trial = 0.0;
+        for (int halving = 0; halving < 20; ++halving) {
+            body.positions() = start + stepScale * dx;
+            body.computeForces(body.positions(), body.velocities(), f);
+            trial = maxNodalForce(body, f);
+            if (std::isfinite(trial) && trial < result.residual) {
+                break;
+            }
+            stepScale *= 0.5;
+        }
+        result.residual = trial;
+        ++result.iterations;
+    }
+    result.converged = result.residual <= forceTolerance;
+    return result;
+}
+
+}  // namespace colonosim::physics

@@ -1,0 +1,117 @@
+#include "simcore/physics/TissueSimulation.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace colonosim::physics {
+
+namespace {
+constexpr size_t kMaxStoredDiagnostics = 100;
+}
+
+TissueSimulation::TissueSimulation(TissueBody& body, const SteppingPolicy& policy) : m_body(body), m_policy(policy)
+{
+    params::require("stepping", SteppingPolicy::loopStepSpec, policy.loopStep);
+    params::require("stepping", SteppingPolicy::safetySpec, policy.safetyFactor);
+    params::require("stepping", SteppingPolicy::maxSpeedSpec, policy.maxNodeSpeed);
+    if (policy.maxSubsteps < 1 || policy.maxSubsteps > 10000) {
+        throw params::ParameterError("stepping.maxSubsteps = " + std::to_string(policy.maxSubsteps) +
+                                     " is outside the allowed range [1, 10000]");
+    }
+    replan();
+}
+
+void TissueSimulation::replan()
+{
+    m_stability = estimateStability(m_body);
+    m_stableStep = maxStableStep(m_policy.integrator, m_stability);
+    std::ostringstream note;
+    if (m_policy.integrator == IntegratorKind::BackwardEuler) {
+        m_integrator = makeIntegrator(IntegratorKind::BackwardEuler);
+        m_substeps = 1;
+        note << "backward_euler, 1 step per loop step";
+    } else {
+        const double usable = m_policy.safetyFactor * m_stableStep;
+        const double needed = usable > 0.0 ? std::ceil(m_policy.loopStep / usable) : INFINITY;
+        if (needed <= m_policy.maxSubsteps) {
+            m_integrator = makeIntegrator(m_policy.integrator);
+            m_substeps = static_cast<int>(needed);
+            note << integratorName(m_policy.integrator) << ", " << m_substeps << " substeps (stable step "
+                 << m_stableStep * 1e6 << " us, omega_max " << m_stability.omegaMax << " rad/s)";
+        } else {
+            m_integrator = makeIntegrator(IntegratorKind::BackwardEuler);
+            m_substeps = 1;
+            note << integratorName(m_policy.integrator) << " would need " << needed << " substeps (stable step "
+                 << m_stableStep * 1e6 << " us) > " << m_policy.maxSubsteps
+                 << "; using backward_euler, 1 step per loop step";
+        }
+    }
+    m_planNote = note.str();
+}
+
+bool TissueSimulation::checkState(StepDiagnostic& diagnostic) const
+{
+    const Positions& x = m_body.positions();
+    const Velocities& v = m_body.velocities();
+    const double limit2 = m_policy.maxNodeSpeed * m_policy.maxNodeSpeed;
+    for (const int i : m_body.integratedNodes()) {
+        const double speed2 = v.col(i).squaredNorm();
+        if (!x.col(i).allFinite() || !std::isfinite(speed2)) {
+            diagnostic.node = i;
+            diagnostic.message = "node " + std::to_string(i) + " has a non-finite position or velocity";
+            return false;
+        }
+        if (speed2 > limit2) {
+            std::ostringstream out;
+            out << "node " << i << " speed " << std::sqrt(speed2) << " m/s exceeds maxNodeSpeed "
+                << m_policy.maxNodeSpeed << " m/s";
+            diagnostic.node = i;
+            diagnostic.message = out.str();
+            return false;
+        }
+    }
+    return true;
+}
+
+bool TissueSimulation::runSubsteps(int substeps)
+{
+    const double h = m_policy.loopStep / substeps;
+    for (int s = 0; s < substeps; ++s) {
+        m_integrator->step(m_body, h);
+    }
+    StepDiagnostic diagnostic;
+    if (checkState(diagnostic)) {
+        return true;
+    }
+    ++m_rejectedSteps;
+    if (m_rejections.size() < kMaxStoredDiagnostics) {
+        diagnostic.time = m_time;
+        std::ostringstream out;
+        out << "t = " << m_time << " s: step rejected (" << integratorName(m_integrator->kind()) << ", "
+            << substeps << " substeps of " << h * 1e6 << " us): " << diagnostic.message;
+        diagnostic.message = out.str();
+        m_rejections.push_back(diagnostic);
+    }
+    m_body.positions() = m_savedX;
+    m_body.velocities() = m_savedV;
+    return false;
+}
+
+bool TissueSimulation::advance()
+{
+    m_savedX = m_body.positions();
+    m_savedV = m_body.velocities();
+    bool accepted = runSubsteps(m_substeps);
+    if (!accepted) {
+        accepted = runSubsteps(2 * m_substeps);
+    }
+    if (accepted) {
+        m_time += m_policy.loopStep;
+        if (m_region != nullptr) {
+            m_region->update(m_body, m_policy.loopStep);
+        }
+    }
+    return accepted;
+}
+
+}  // namespace colonosim::physics
