@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <complex>
 #include <limits>
 #include <random>
 #include <stdexcept>
@@ -59,9 +58,16 @@ double amplification(IntegratorKind kind, double omega, double c, double h)
     }
     case IntegratorKind::BackwardEuler: A = (I - h * J).inverse(); break;
     }
-    const std::complex<double> half(0.5 * A.trace(), 0.0);
-    const std::complex<double> root = std::sqrt(half * half - std::complex<double>(A.determinant(), 0.0));
-    return std::max(std::abs(half + root), std::abs(half - root));
+    // Eigenvalues (a + d)/2 +- sqrt(((a - d)/2)^2 + bc): this discriminant
+    // avoids the cancellation of tr^2/4 - det when A is close to I.
+    const double mean = 0.5 * (A(0, 0) + A(1, 1));
+    const double halfDiff = 0.5 * (A(0, 0) - A(1, 1));
+    const double discriminant = halfDiff * halfDiff + A(0, 1) * A(1, 0);
+    if (discriminant < 0.0) {
+        return std::sqrt(std::abs(A.determinant()));  // complex pair, |lambda|^2 = det
+    }
+    const double root = std::sqrt(discriminant);
+    return std::max(std::abs(mean + root), std::abs(mean - root));
 }
 
 namespace {
