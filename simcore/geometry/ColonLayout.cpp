@@ -46,10 +46,10 @@ const std::array<SegmentShape, kNumSegments>& shapes()
         {{{0.2, {-0.3, -0.7, 0.3}}, {0.5, {0.0, -1.0, 0.8}}, {0.8, {0.4, -0.6, 0.3}}}},     // sigmoid loop
         {{{0.5, {1.0, 0.0, 0.0}}}},                                                          // descending: lateral
         {{{0.5, {0.7, 0.0, 0.7}}}},                                                          // splenic flexure
-        {{{0.3, {0.0, -0.6, -0.8}}, {0.5, {0.0, -0.7, -1.0}}, {0.7, {0.0, -0.6, -0.8}}}},   // transverse sag
+        {{{0.25, {0.0, -0.3, -0.45}}, {0.5, {0.0, -0.7, -1.0}}, {0.75, {0.0, -0.3, -0.45}}}},   // transverse sag
         {{{0.5, {-0.7, 0.0, 0.7}}}},                                                         // hepatic flexure
         {{{0.5, {-1.0, 0.0, 0.0}}}},                                                         // ascending: lateral
-        {{{0.5, {-0.5, -0.5, -0.7}}}},                                                       // cecum
+        {},                                                                                  // cecum: straight pouch
     }};
     return s;
 }
@@ -137,6 +137,43 @@ double smoothstep(double x)
     return x * x * (3.0 - 2.0 * x);
 }
 
+/// Narrows the lumen where the bend radius is below it, so rings of wall
+/// nodes never pass through each other on the inner side of a flexure.
+void limitRadiusByBend(Centreline& c)
+{
+    const int n = c.numPoints();
+    constexpr int kHalfStencil = 5;
+    constexpr int kHalfWindow = 15;
+    std::vector<double> cap(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i) {
+        const auto a = static_cast<std::size_t>(std::max(0, i - kHalfStencil));
+        const auto b = static_cast<std::size_t>(std::min(n - 1, i + kHalfStencil));
+        const double ds = c.arcLength[b] - c.arcLength[a];
+        const double curvature = ds > 0.0 ? (c.tangents[b] - c.tangents[a]).norm() / ds : 0.0;
+        cap[static_cast<std::size_t>(i)] = std::min(c.radius[static_cast<std::size_t>(i)],
+                                                    curvature > 0.0 ? kMaxBendRatio / curvature : 1e9);
+    }
+    // Erode then average over the same window: the result is smooth and never
+    // above the cap at any sample.
+    std::vector<double> eroded(cap.size());
+    for (int i = 0; i < n; ++i) {
+        double m = cap[static_cast<std::size_t>(i)];
+        for (int j = std::max(0, i - kHalfWindow); j <= std::min(n - 1, i + kHalfWindow); ++j) {
+            m = std::min(m, cap[static_cast<std::size_t>(j)]);
+        }
+        eroded[static_cast<std::size_t>(i)] = m;
+    }
+    for (int i = 0; i < n; ++i) {
+        double sum = 0.0;
+        int count = 0;
+        for (int j = std::max(0, i - kHalfWindow); j <= std::min(n - 1, i + kHalfWindow); ++j) {
+            sum += eroded[static_cast<std::size_t>(j)];
+            ++count;
+        }
+        c.radius[static_cast<std::size_t>(i)] = sum / count;
+    }
+}
+
 }  // namespace
 
 ColonLayout layoutColon(const AnatomyParameters& params, double sampleSpacing)
@@ -156,8 +193,17 @@ ColonLayout layoutColon(const AnatomyParameters& params, double sampleSpacing)
             layout.stations[i] = scale * defaultStations()[i];
         }
         amplitude.fill(0.0);
+        double cecumChord = declared[kNumSegments - 1];
         for (int sweep = 0; sweep < 8; ++sweep) {
-            for (int seg = 0; seg < kNumSegments; ++seg) {
+            // The cecum continues the ascending colon straight down: its base
+            // lies on the line from the last ascending control point through
+            // the ileocecal valve, at the distance that gives its length.
+            const ControlPolygon current = buildControlPolygon(layout.stations, amplitude);
+            const auto valve = static_cast<std::size_t>(current.stationIndex[kNumSegments - 1]);
+            const Eigen::Vector3d down = (current.points[valve] - current.points[valve - 1]).normalized();
+            layout.stations[kNumSegments] = layout.stations[kNumSegments - 1] + cecumChord * down;
+            cecumChord *= declared[kNumSegments - 1] / segmentArcLength(buildControlPolygon(layout.stations, amplitude), kNumSegments - 1);
+            for (int seg = 0; seg + 1 < kNumSegments; ++seg) {
                 const auto s = static_cast<std::size_t>(seg);
                 const auto lengthAt = [&](double a) {
                     amplitude[s] = a;
@@ -237,6 +283,7 @@ ColonLayout layoutColon(const AnatomyParameters& params, double sampleSpacing)
         }
         c.radius[i] = radius;
     }
+    limitRadiusByBend(c);
     return layout;
 }
 

@@ -19,6 +19,10 @@
 ///
 /// The radius blends between the segments' declared diameters with a smoothstep
 /// over +-3 cm (at most half the shorter neighbour) around each boundary.
+/// Where the bend radius 1/kappa of a flexure is smaller than the lumen radius
+/// the lumen is narrowed to kMaxBendRatio / kappa (eroded and averaged over
+/// +-15 mm): the wall bunches on the inner side of a sharp flexure, and a swept
+/// tube wider than its bend radius would pass through itself.
 
 #include "simcore/geometry/AnatomyParameters.h"
 #include "simcore/geometry/Centreline.h"
@@ -28,6 +32,9 @@
 #include <array>
 
 namespace colonosim::geometry {
+
+/// Largest lumen radius times centreline curvature the layout allows.
+inline constexpr double kMaxBendRatio = 0.85;
 
 struct ColonLayout {
     Centreline centreline;

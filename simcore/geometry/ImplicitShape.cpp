@@ -1,5 +1,6 @@
 #include "simcore/geometry/ImplicitShape.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 

@@ -4,6 +4,7 @@
 #include "simcore/geometry/ColonLayout.h"
 #include "simcore/geometry/ProceduralOrgans.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <numbers>
