@@ -143,7 +143,7 @@ void limitRadiusByBend(Centreline& c)
 {
     const int n = c.numPoints();
     constexpr int kHalfStencil = 5;
-    constexpr int kHalfWindow = 15;
+    constexpr int kHalfWindow = 25;
     std::vector<double> cap(static_cast<std::size_t>(n));
     for (int i = 0; i < n; ++i) {
         const auto a = static_cast<std::size_t>(std::max(0, i - kHalfStencil));

@@ -21,7 +21,7 @@
 /// over +-3 cm (at most half the shorter neighbour) around each boundary.
 /// Where the bend radius 1/kappa of a flexure is smaller than the lumen radius
 /// the lumen is narrowed to kMaxBendRatio / kappa (eroded and averaged over
-/// +-15 mm): the wall bunches on the inner side of a sharp flexure, and a swept
+/// +-25 mm): the wall bunches on the inner side of a sharp flexure, and a swept
 /// tube wider than its bend radius would pass through itself.
 
 #include "simcore/geometry/AnatomyParameters.h"

@@ -59,8 +59,8 @@ TEST_P(ColonLayoutCase, FramesAreOrthonormalAndRotationMinimising)
         const Eigen::Vector3d b = c.tangents[k].cross(c.normals[k]) + c.tangents[k + 1].cross(c.normals[k + 1]);
         EXPECT_LT(std::abs((c.normals[k + 1] - c.normals[k]).dot(0.5 * b)), 1e-4) << "at sample " << i;
         // Radius changes smoothly: < 0.5 mm per 1 mm step (the steepest is the
-        // narrowing at a sharp flexure, spread over +-15 mm).
-        EXPECT_LT(std::abs(c.radius[k + 1] - c.radius[k]), 2e-4);
+        // narrowing at a sharp flexure, spread over +-25 mm).
+        EXPECT_LT(std::abs(c.radius[k + 1] - c.radius[k]), 5e-4);
         // No bend sharper than the lumen is wide (the rings would cross).
         if (i > 0) {
             const double curvature = (c.tangents[k + 1] - c.tangents[k - 1]).norm() / (c.arcLength[k + 1] - c.arcLength[k - 1]);
