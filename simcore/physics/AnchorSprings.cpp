@@ -48,7 +48,7 @@ void AnchorSprings::addDampingProduct(const Positions& /*x*/, const Eigen::Matri
     }
 }
 
-void AnchorSprings::addStiffnessBound(Eigen::VectorXd& kRow, Eigen::VectorXd& cRow) const
+void AnchorSprings::addStiffnessBound(const Positions& /*x*/, Eigen::VectorXd& kRow, Eigen::VectorXd& cRow) const
 {
     for (size_t a = 0; a < m_node.size(); ++a) {
         kRow[m_node[a]] += m_k[a];

@@ -2,6 +2,7 @@
 
 #include "simcore/physics/Gravity.h"
 #include "simcore/physics/OrganConstraint.h"
+#include "simcore/physics/ViscousDrag.h"
 
 #include <algorithm>
 #include <cmath>
@@ -113,13 +114,16 @@ ColonBody buildColonBody(const ColonAnatomy& anatomy, const TissueParameters& ti
     }
     colon.adhesions = static_cast<AnchorSprings*>(&body.addForceTerm(std::move(adhesions)));
 
+    if (tissue.surroundingDampingRate > 0.0) {
+        body.addForceTerm(std::make_unique<ViscousDrag>(mass, tissue.surroundingDampingRate));
+    }
     if (options.withGravity && environment.gravity > 0.0) {
         body.addForceTerm(
             std::make_unique<Gravity>(mass, environment.gravity * downDirection(environment.patientPosition)));
     }
     if (options.withInsufflation) {
         colon.insufflation = static_cast<InsufflationPressure*>(&body.addForceTerm(
-            std::make_unique<InsufflationPressure>(mesh.triangles, environment.insufflationPressure, mesh.vertices)));
+            std::make_unique<InsufflationPressure>(mesh.triangles, environment.insufflationPressure)));
     }
     if (options.withOrgans && !anatomy.organs.empty()) {
         body.addConstraint(std::make_unique<OrganConstraint>(anatomy.organs));

@@ -15,7 +15,8 @@
 /// Fixations: Fixed nodes are held; retroperitoneal nodes are anchored to
 /// their rest positions; mesenteric nodes hang on a Mesentery tether of
 /// stiffness k = E_m t_m (A_i / 2 pi r) / L to their root. Every spring is
-/// damped with c = beta k. Environment: gravity by patient position,
+/// damped with c = beta k, and the surrounding viscera add a drag -alpha m v.
+/// Environment: gravity by patient position,
 /// insufflation pressure, organs as non-penetrable shapes.
 
 #include "simcore/geometry/ColonAnatomy.h"

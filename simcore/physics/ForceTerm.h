@@ -50,10 +50,10 @@ public:
     }
     /// df += D(x) dv with D = d(damping force)/dv.
     virtual void addDampingProduct(const Positions& x, const Eigen::Matrix3Xd& dv, Eigen::Matrix3Xd& df) const = 0;
-    /// kRow(i) += sum over j of ||K_ij|| for the worst state the term
-    /// declares (e.g. a spring's stiffness; a stiffening mesentery at its
-    /// declared maximum stretch); cRow(i) likewise for D.
-    virtual void addStiffnessBound(Eigen::VectorXd& kRow, Eigen::VectorXd& cRow) const = 0;
+    /// kRow(i) += sum over j of ||K_ij|| at state x, or at the worst state
+    /// the term declares where that is tighter to state (a stiffening
+    /// mesentery at its declared maximum stretch); cRow(i) likewise for D.
+    virtual void addStiffnessBound(const Positions& x, Eigen::VectorXd& kRow, Eigen::VectorXd& cRow) const = 0;
     /// Potential energy of the elastic part, J (0 for non-conservative terms).
     [[nodiscard]] virtual double potentialEnergy(const Positions& x) const = 0;
     /// True when K and D are symmetric, so the implicit solver may include

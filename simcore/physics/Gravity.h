@@ -33,7 +33,7 @@ public:
     void addDampingForce(const Positions&, const Velocities&, Forces&) const override {}
     void addStiffnessProduct(const Positions&, const Eigen::Matrix3Xd&, Eigen::Matrix3Xd&) const override {}
     void addDampingProduct(const Positions&, const Eigen::Matrix3Xd&, Eigen::Matrix3Xd&) const override {}
-    void addStiffnessBound(Eigen::VectorXd&, Eigen::VectorXd&) const override {}
+    void addStiffnessBound(const Positions&, Eigen::VectorXd&, Eigen::VectorXd&) const override {}
     [[nodiscard]] double potentialEnergy(const Positions& x) const override;
 
 private:

@@ -7,18 +7,9 @@
 
 namespace colonosim::physics {
 
-InsufflationPressure::InsufflationPressure(std::vector<std::array<int, 3>> triangles, double pressure,
-                                           const Positions& rest)
+InsufflationPressure::InsufflationPressure(std::vector<std::array<int, 3>> triangles, double pressure)
     : m_triangles(std::move(triangles)), m_pressure(pressure)
 {
-    m_longestEdge.reserve(m_triangles.size());
-    for (const auto& tri : m_triangles) {
-        double longest = 0.0;
-        for (int k = 0; k < 3; ++k) {
-            longest = std::max(longest, (rest.col(tri[(k + 1) % 3]) - rest.col(tri[k])).norm());
-        }
-        m_longestEdge.push_back(longest);
-    }
     onActiveSetChanged({});
 }
 
@@ -52,13 +43,19 @@ void InsufflationPressure::addStiffnessProduct(const Positions& x, const Eigen::
     }
 }
 
-void InsufflationPressure::addStiffnessBound(Eigen::VectorXd& kRow, Eigen::VectorXd& /*cRow*/) const
+void InsufflationPressure::addStiffnessBound(const Positions& x, Eigen::VectorXd& kRow,
+                                             Eigen::VectorXd& /*cRow*/) const
 {
     // Each 3x3 block of the differential is (p/6) [e]x for an edge e of the
     // triangle, of norm (p/6)|e|; a node's row holds three such blocks per
-    // incident triangle. Evaluated on the rest shape.
+    // incident triangle. Evaluated at the current shape.
     for (size_t t = 0; t < m_triangles.size(); ++t) {
-        const double rowSum = 3.0 * std::abs(m_pressure) / 6.0 * m_longestEdge[t];
+        const auto& tri = m_triangles[t];
+        double longest = 0.0;
+        for (int k = 0; k < 3; ++k) {
+            longest = std::max(longest, (x.col(tri[(k + 1) % 3]) - x.col(tri[k])).norm());
+        }
+        const double rowSum = 3.0 * std::abs(m_pressure) / 6.0 * longest;
         for (const int node : m_triangles[t]) {
             kRow[node] += rowSum;
         }

@@ -16,9 +16,8 @@ namespace colonosim::physics {
 
 class InsufflationPressure final : public ForceTerm {
 public:
-    /// `triangles` oriented with normals out of the lumen; p in Pa. The rest
-    /// positions give the edge lengths of the stiffness bound.
-    InsufflationPressure(std::vector<std::array<int, 3>> triangles, double pressure, const Positions& rest);
+    /// `triangles` oriented with normals out of the lumen; p in Pa.
+    InsufflationPressure(std::vector<std::array<int, 3>> triangles, double pressure);
 
     void setPressure(double pressure) { m_pressure = pressure; }
     [[nodiscard]] double pressure() const { return m_pressure; }
@@ -28,7 +27,7 @@ public:
     void addDampingForce(const Positions&, const Velocities&, Forces&) const override {}
     void addStiffnessProduct(const Positions& x, const Eigen::Matrix3Xd& dx, Eigen::Matrix3Xd& df) const override;
     void addDampingProduct(const Positions&, const Eigen::Matrix3Xd&, Eigen::Matrix3Xd&) const override {}
-    void addStiffnessBound(Eigen::VectorXd& kRow, Eigen::VectorXd& cRow) const override;
+    void addStiffnessBound(const Positions& x, Eigen::VectorXd& kRow, Eigen::VectorXd& cRow) const override;
     [[nodiscard]] double potentialEnergy(const Positions&) const override { return 0.0; }
     [[nodiscard]] bool hasSymmetricJacobian() const override { return false; }
     void onActiveSetChanged(const std::vector<std::uint8_t>& awake) override;
@@ -36,7 +35,6 @@ public:
 private:
     std::vector<std::array<int, 3>> m_triangles;
     std::vector<int> m_active;
-    std::vector<double> m_longestEdge;  ///< per triangle, at rest, m
     double m_pressure;
 };
 

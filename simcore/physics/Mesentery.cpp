@@ -103,7 +103,7 @@ void Mesentery::addDampingProduct(const Positions& x, const Eigen::Matrix3Xd& dv
     }
 }
 
-void Mesentery::addStiffnessBound(Eigen::VectorXd& kRow, Eigen::VectorXd& cRow) const
+void Mesentery::addStiffnessBound(const Positions& /*x*/, Eigen::VectorXd& kRow, Eigen::VectorXd& cRow) const
 {
     for (size_t t = 0; t < m_node.size(); ++t) {
         kRow[m_node[t]] += tangentStiffness(m_law[t], m_rest[t], m_law[t].maxStrain * m_rest[t]);

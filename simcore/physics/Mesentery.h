@@ -42,7 +42,7 @@ public:
     void addDampingForce(const Positions& x, const Velocities& v, Forces& f) const override;
     void addStiffnessProduct(const Positions& x, const Eigen::Matrix3Xd& dx, Eigen::Matrix3Xd& df) const override;
     void addDampingProduct(const Positions& x, const Eigen::Matrix3Xd& dv, Eigen::Matrix3Xd& df) const override;
-    void addStiffnessBound(Eigen::VectorXd& kRow, Eigen::VectorXd& cRow) const override;
+    void addStiffnessBound(const Positions& x, Eigen::VectorXd& kRow, Eigen::VectorXd& cRow) const override;
     [[nodiscard]] double potentialEnergy(const Positions& x) const override;
 
 private:

@@ -90,7 +90,7 @@ MeasuredStiffness measureTubeStiffness(const TubeResolution& tube, const TissueP
     {
         TubeBody tb = makeTubeBody(tube, tissue, factors);
         const double pressure = kStrain * et / tube.radius;
-        tb.body.addForceTerm(std::make_unique<InsufflationPressure>(tb.mesh.triangles, pressure, tb.mesh.vertices));
+        tb.body.addForceTerm(std::make_unique<InsufflationPressure>(tb.mesh.triangles, pressure));
         const Positions rest = tb.body.positions();
         solveStaticEquilibrium(tb.body, 1e-9 * pressure * tube.radius * tube.ringSpacing);
         const int middle = tube.rings / 2;

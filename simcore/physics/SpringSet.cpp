@@ -159,13 +159,19 @@ void SpringSet::addDampingProduct(const Positions& x, const Eigen::Matrix3Xd& dv
     }
 }
 
-void SpringSet::addStiffnessBound(Eigen::VectorXd& kRow, Eigen::VectorXd& cRow) const
+void SpringSet::addStiffnessBound(const Positions& x, Eigen::VectorXd& kRow, Eigen::VectorXd& cRow) const
 {
-    // ||K_e|| = k max(1, |1 - L/l|); the a-priori bound assumes l >= L/2 (no
-    // spring compressed to less than half its rest length), where it is k.
+    // ||K_e|| = k max(1, |1 - L/l|) at the current length l. A spring
+    // compressed to nearly zero length has an unbounded transverse term; the
+    // factor is capped at kMaxTransverseFactor there, and the step check of
+    // TissueSimulation catches what the cap misses.
+    constexpr double kMaxTransverseFactor = 10.0;
     for (size_t e = 0; e < m_i.size(); ++e) {
-        kRow[m_i[e]] += 2.0 * m_k[e];
-        kRow[m_j[e]] += 2.0 * m_k[e];
+        const double l = (x.col(m_j[e]) - x.col(m_i[e])).norm();
+        const double factor =
+            l > kMinLength ? std::min(std::max(1.0, std::abs(1.0 - m_rest[e] / l)), kMaxTransverseFactor) : 1.0;
+        kRow[m_i[e]] += 2.0 * factor * m_k[e];
+        kRow[m_j[e]] += 2.0 * factor * m_k[e];
         cRow[m_i[e]] += 2.0 * m_c[e];
         cRow[m_j[e]] += 2.0 * m_c[e];
     }

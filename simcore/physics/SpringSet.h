@@ -48,7 +48,7 @@ public:
     void addDefiniteStiffnessProduct(const Positions& x, const Eigen::Matrix3Xd& dx,
                                      Eigen::Matrix3Xd& df) const override;
     void addDampingProduct(const Positions& x, const Eigen::Matrix3Xd& dv, Eigen::Matrix3Xd& df) const override;
-    void addStiffnessBound(Eigen::VectorXd& kRow, Eigen::VectorXd& cRow) const override;
+    void addStiffnessBound(const Positions& x, Eigen::VectorXd& kRow, Eigen::VectorXd& cRow) const override;
     [[nodiscard]] double potentialEnergy(const Positions& x) const override;
     void onActiveSetChanged(const std::vector<std::uint8_t>& awake) override;
 

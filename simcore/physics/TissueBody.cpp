@@ -192,7 +192,7 @@ void TissueBody::stiffnessBounds(Eigen::VectorXd& kRow, Eigen::VectorXd& cRow) c
     kRow.setZero(numNodes());
     cRow.setZero(numNodes());
     for (const auto& term : m_terms) {
-        term->addStiffnessBound(kRow, cRow);
+        term->addStiffnessBound(m_x, kRow, cRow);
     }
 }
 

@@ -6,7 +6,7 @@ namespace colonosim::physics {
 
 namespace {
 using T = TissueParameters;
-constexpr std::array<Field<T>, 12> kTissueFields{{
+constexpr std::array<Field<T>, 13> kTissueFields{{
     {&T::youngModulusSpec, &T::wallYoungModulus},
     {&T::thicknessSpec, &T::wallThickness},
     {&T::densitySpec, &T::wallDensity},
@@ -19,6 +19,7 @@ constexpr std::array<Field<T>, 12> kTissueFields{{
     {&T::maxStrainSpec, &T::mesenteryMaxStrain},
     {&T::retroperitonealSpec, &T::retroperitonealStiffness},
     {&T::adhesionSpec, &T::adhesionStiffness},
+    {&T::surroundingDampingSpec, &T::surroundingDampingRate},
 }};
 using E = EnvironmentParameters;
 constexpr std::array<Field<E>, 2> kEnvironmentFields{{

@@ -17,7 +17,7 @@ using params::ParameterSpec;
 
 struct TissueParameters {
     static constexpr ParameterSpec youngModulusSpec{
-        "wallYoungModulus", "Pa", 1.74e6, 1.0e5, 2.0e7,
+        "wallYoungModulus", "Pa", 1.74e6, 0.5e6, 2.0e7,
         "Young's modulus of the colon wall, human, longitudinal, at 10 cm/s",
         "J Biomech 91:102, 2019 (1.74 MPa at 10 cm/s; 5.18 MPa recto-sigmoid, SpringerPlus 2015)"};
     static constexpr ParameterSpec thicknessSpec{
@@ -61,6 +61,11 @@ struct TissueParameters {
         "adhesionStiffness", "N/m", 500.0, 10.0, 10000.0, "stiffness of an adhesion anchor",
         "assumption: stiffer than the retroperitoneal binding (prior surgery)"};
 
+    static constexpr ParameterSpec surroundingDampingSpec{
+        "surroundingDampingRate", "1/s", 20.0, 0.0, 200.0,
+        "alpha in f = -alpha m v: drag of the surrounding viscera on the wall",
+        "assumption: damps the ~1-3 Hz pendulum modes of the colon on its mesentery within about 0.2 s"};
+
     double wallYoungModulus = youngModulusSpec.defaultValue;
     double wallThickness = thicknessSpec.defaultValue;
     double wallDensity = densitySpec.defaultValue;
@@ -73,6 +78,7 @@ struct TissueParameters {
     double mesenteryMaxStrain = maxStrainSpec.defaultValue;
     double retroperitonealStiffness = retroperitonealSpec.defaultValue;
     double adhesionStiffness = adhesionSpec.defaultValue;
+    double surroundingDampingRate = surroundingDampingSpec.defaultValue;
 
     [[nodiscard]] static std::span<const Field<TissueParameters>> fields();
     void validate() const;

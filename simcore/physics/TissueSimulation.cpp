@@ -1,5 +1,6 @@
 #include "simcore/physics/TissueSimulation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -14,6 +15,10 @@ TissueSimulation::TissueSimulation(TissueBody& body, const SteppingPolicy& polic
     params::require("stepping", SteppingPolicy::loopStepSpec, policy.loopStep);
     params::require("stepping", SteppingPolicy::safetySpec, policy.safetyFactor);
     params::require("stepping", SteppingPolicy::maxSpeedSpec, policy.maxNodeSpeed);
+    if (policy.replanInterval < 1) {
+        throw params::ParameterError("stepping.replanInterval = " + std::to_string(policy.replanInterval) +
+                                     " must be >= 1 loop step");
+    }
     if (policy.maxSubsteps < 1 || policy.maxSubsteps > 10000) {
         throw params::ParameterError("stepping.maxSubsteps = " + std::to_string(policy.maxSubsteps) +
                                      " is outside the allowed range [1, 10000]");
@@ -26,20 +31,27 @@ void TissueSimulation::replan()
     m_stability = estimateStability(m_body);
     m_stableStep = maxStableStep(m_policy.integrator, m_stability);
     std::ostringstream note;
-    if (m_policy.integrator == IntegratorKind::BackwardEuler) {
-        m_integrator = makeIntegrator(IntegratorKind::BackwardEuler);
+    m_stepsSincePlan = 0;
+    if (m_policy.integrator == IntegratorKind::BackwardEuler || m_minimumSubsteps > m_policy.maxSubsteps) {
+        if (m_integrator == nullptr || m_integrator->kind() != IntegratorKind::BackwardEuler) {
+            m_integrator = makeIntegrator(IntegratorKind::BackwardEuler);
+        }
         m_substeps = 1;
         note << "backward_euler, 1 step per loop step";
     } else {
         const double usable = m_policy.safetyFactor * m_stableStep;
         const double needed = usable > 0.0 ? std::ceil(m_policy.loopStep / usable) : INFINITY;
         if (needed <= m_policy.maxSubsteps) {
-            m_integrator = makeIntegrator(m_policy.integrator);
-            m_substeps = static_cast<int>(needed);
+            if (m_integrator == nullptr || m_integrator->kind() != m_policy.integrator) {
+                m_integrator = makeIntegrator(m_policy.integrator);
+            }
+            m_substeps = std::max(static_cast<int>(needed), m_minimumSubsteps);
             note << integratorName(m_policy.integrator) << ", " << m_substeps << " substeps (stable step "
                  << m_stableStep * 1e6 << " us, omega_max " << m_stability.omegaMax << " rad/s)";
         } else {
-            m_integrator = makeIntegrator(IntegratorKind::BackwardEuler);
+            if (m_integrator == nullptr || m_integrator->kind() != IntegratorKind::BackwardEuler) {
+                m_integrator = makeIntegrator(IntegratorKind::BackwardEuler);
+            }
             m_substeps = 1;
             note << integratorName(m_policy.integrator) << " would need " << needed << " substeps (stable step "
                  << m_stableStep * 1e6 << " us) > " << m_policy.maxSubsteps
@@ -103,7 +115,13 @@ bool TissueSimulation::advance()
     m_savedV = m_body.velocities();
     bool accepted = runSubsteps(m_substeps);
     if (!accepted) {
-        accepted = runSubsteps(2 * m_substeps);
+        // Keep the finer step from now on and re-derive the plan from the
+        // current state; past the budget this switches to backward Euler.
+        m_minimumSubsteps = 2 * m_substeps;
+        replan();
+        accepted = runSubsteps(m_substeps);
+    } else if (++m_stepsSincePlan >= m_policy.replanInterval) {
+        replan();
     }
     if (accepted) {
         m_time += m_policy.loopStep;

@@ -10,7 +10,10 @@
 /// After each loop step the state is checked (finite, node speed below the
 /// declared limit). A failing step is rejected: the last good state is kept,
 /// a diagnostic names the node, the value and the limit, and the step is
-/// retried once with twice the substeps. advance() never throws.
+/// retried once with twice the substeps, and the plan is re-derived from the
+/// current state. The bound is also re-evaluated at the current state every
+/// replanInterval loop steps (large deformation changes the stiffness).
+/// advance() never throws.
 
 #include "simcore/params/Parameter.h"
 #include "simcore/physics/ActiveRegion.h"
@@ -38,7 +41,8 @@ struct SteppingPolicy {
     double loopStep = loopStepSpec.defaultValue;
     double safetyFactor = safetySpec.defaultValue;
     double maxNodeSpeed = maxSpeedSpec.defaultValue;
-    int maxSubsteps = 32;  ///< explicit substeps allowed per loop step before falling back to implicit
+    int maxSubsteps = 64;  ///< explicit substeps allowed per loop step before falling back to implicit
+    int replanInterval = 50;  ///< loop steps between re-evaluations of the stability bound at the current state
 };
 
 struct StepDiagnostic {
@@ -90,6 +94,8 @@ private:
     Velocities m_savedV;
     std::vector<StepDiagnostic> m_rejections;
     long m_rejectedSteps = 0;
+    long m_stepsSincePlan = 0;
+    int m_minimumSubsteps = 1;  ///< raised after a rejection
 };
 
 }  // namespace colonosim::physics

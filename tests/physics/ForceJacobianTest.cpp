@@ -85,9 +85,9 @@ std::vector<TermCase> termCases()
          },
          1e-3},
         {"insufflation",
-         [](const Positions& x) {
+         [](const Positions&) {
              return std::make_unique<InsufflationPressure>(
-                 std::vector<std::array<int, 3>>{{0, 1, 2}, {1, 3, 2}, {2, 3, 4}}, 2000.0, x);
+                 std::vector<std::array<int, 3>>{{0, 1, 2}, {1, 3, 2}, {2, 3, 4}}, 2000.0);
          },
          1e-3},
         {"gravity",
@@ -197,15 +197,21 @@ INSTANTIATE_TEST_SUITE_P(AllTerms, ForceJacobian, ::testing::ValuesIn(termCases(
 
 TEST(SpringSet, StiffnessBoundCoversTheBlockNorm)
 {
-    // At l >= L/2 the 3x3 block norm is k max(1, |1 - L/l|) <= k; the bound
-    // adds 2k per end (diagonal and off-diagonal block).
+    // The 3x3 block norm is k max(1, |1 - L/l|); the bound adds it twice per
+    // end (diagonal and off-diagonal block).
     SpringSet springs;
     springs.add(0, 1, 0.01, 100.0, 0.5);
     Eigen::VectorXd kRow = Eigen::VectorXd::Zero(2);
     Eigen::VectorXd cRow = Eigen::VectorXd::Zero(2);
-    springs.addStiffnessBound(kRow, cRow);
+    Positions x = Positions::Zero(3, 2);
+    x(0, 1) = 0.01;  // at rest length
+    springs.addStiffnessBound(x, kRow, cRow);
     EXPECT_DOUBLE_EQ(kRow[0], 200.0);
-    EXPECT_DOUBLE_EQ(cRow[1], 1.0);
+    x(0, 1) = 0.002;  // compressed to L/5: transverse factor |1 - L/l| = 4
+    kRow.setZero();
+    springs.addStiffnessBound(x, kRow, cRow);
+    EXPECT_DOUBLE_EQ(kRow[0], 800.0);
+    EXPECT_DOUBLE_EQ(cRow[1], 2.0) << "two evaluations of 2c";
 }
 
 TEST(SpringSet, RemoveKeepsTheOtherSprings)
