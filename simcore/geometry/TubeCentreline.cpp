@@ -126,18 +126,14 @@ Centreline computeCentreline(const TriangleMesh& mesh)
 {
     const auto numV = static_cast<std::size_t>(mesh.numVertices());
     Adjacency adj(numV);
-    std::vector<double> area(numV, 0.0);
     double edgeSum = 0.0;
     for (const auto& t : mesh.triangles) {
-        const Eigen::Vector3d a = mesh.vertices.col(t[0]);
-        const double third = (mesh.vertices.col(t[1]) - a).cross(mesh.vertices.col(t[2]) - a).norm() / 6.0;
         for (int k = 0; k < 3; ++k) {
             const int u = t[static_cast<std::size_t>(k)], v = t[static_cast<std::size_t>((k + 1) % 3)];
             const double len = (mesh.vertices.col(u) - mesh.vertices.col(v)).norm();
             adj[static_cast<std::size_t>(u)].push_back({v, len});
             adj[static_cast<std::size_t>(v)].push_back({u, len});
             edgeSum += len;
-            area[static_cast<std::size_t>(u)] += third;
         }
     }
     const double meanEdge = edgeSum / std::max<std::size_t>(1, 3 * mesh.triangles.size());
@@ -158,8 +154,10 @@ Centreline computeCentreline(const TriangleMesh& mesh)
         for (std::size_t v = 0; v < numV; ++v) {
             if (!std::isfinite(param[v])) continue;
             const auto bin = static_cast<std::size_t>(std::clamp(static_cast<int>(param[v] / total * numSlices), 0, numSlices - 1));
-            sum[bin] += area[v] * mesh.vertices.col(static_cast<Eigen::Index>(v));
-            weight[bin] += area[v];
+            // Unweighted: on a bent tube an area-weighted centroid sits
+            // kappa r^2 / 2 outside the axis (the outer wall is longer).
+            sum[bin] += mesh.vertices.col(static_cast<Eigen::Index>(v));
+            weight[bin] += 1.0;
         }
         std::vector<Eigen::Vector3d> polyline;
         if (!loops.empty()) polyline.push_back(centroid(mesh, loops[0]));
@@ -171,13 +169,27 @@ Centreline computeCentreline(const TriangleMesh& mesh)
     };
     double maxG = 0.0;
     for (double d : g) if (std::isfinite(d)) maxG = std::max(maxG, d);
+    // Distance from the other end as well: u = g0 / (g0 + g1) has level sets
+    // much closer to cross-sections than g0 alone, which lags on the inner
+    // side of every bend.
+    const std::vector<int> farEnd = loops.size() > 1
+        ? loops[1]
+        : std::vector<int>{static_cast<int>(std::max_element(g.begin(), g.end(), [](double a, double b) {
+              return (std::isfinite(a) ? a : -1.0) < (std::isfinite(b) ? b : -1.0);
+          }) - g.begin())};
+    const std::vector<double> g1 = geodesic(adj, farEnd);
+    std::vector<double> u(numV, 0.0);
+    for (std::size_t v = 0; v < numV; ++v) {
+        const double sum = g[v] + g1[v];
+        u[v] = sum > 0.0 && std::isfinite(sum) ? maxG * g[v] / sum : 0.0;
+    }
     const int numSlices = std::max(4, static_cast<int>(maxG / (2.0 * meanEdge)));
-    std::vector<Eigen::Vector3d> polyline = slicesBy(g, maxG * (1.0 + 1e-9), numSlices);
+    std::vector<Eigen::Vector3d> polyline = slicesBy(u, maxG * (1.0 + 1e-9), numSlices);
     smooth(polyline, 3);
 
     std::vector<double> s(numV, 0.0);
     std::vector<double> axisDistance(numV, 0.0);
-    for (int refinement = 0; refinement < 2; ++refinement) {
+    for (int refinement = 0; refinement < 3; ++refinement) {
         const std::vector<double> cum = cumulative(polyline);
         for (std::size_t v = 0; v < numV; ++v) s[v] = project(polyline, cum, mesh.vertices.col(static_cast<Eigen::Index>(v)), &axisDistance[v]);
         const double length = cum.back();
