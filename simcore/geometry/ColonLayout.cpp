@@ -142,7 +142,7 @@ double smoothstep(double x)
 void limitRadiusByBend(Centreline& c)
 {
     const int n = c.numPoints();
-    constexpr int kHalfStencil = 5;
+    constexpr int kHalfStencil = 1;
     constexpr int kHalfWindow = 25;
     std::vector<double> cap(static_cast<std::size_t>(n));
     for (int i = 0; i < n; ++i) {

@@ -48,16 +48,18 @@ TEST_P(ColonLayoutCase, FramesAreOrthonormalAndRotationMinimising)
     const ColonLayout layout = layoutColon(withLengths(GetParam().lengths));
     const Centreline& c = layout.centreline;
     ASSERT_GT(c.numPoints(), 1000);
+    double totalTwist = 0.0;
+    double totalTurn = 0.0;
     for (int i = 0; i + 1 < c.numPoints(); ++i) {
         const auto k = static_cast<std::size_t>(i);
         ASSERT_NEAR(c.tangents[k].norm(), 1.0, 1e-9);
         ASSERT_NEAR(c.normals[k].norm(), 1.0, 1e-9);
         ASSERT_NEAR(c.tangents[k].dot(c.normals[k]), 0.0, 1e-9);
         // Parallel transport has no twist: the change of the normal has no
-        // component along the mean binormal. The midpoint estimate is exact to
-        // third order in the turn per step (up to ~0.05 rad at a flexure, 0.05^3 ~ 1e-4).
+        // component along the mean binormal (accumulated below).
         const Eigen::Vector3d b = c.tangents[k].cross(c.normals[k]) + c.tangents[k + 1].cross(c.normals[k + 1]);
-        EXPECT_LT(std::abs((c.normals[k + 1] - c.normals[k]).dot(0.5 * b)), 1e-4) << "at sample " << i;
+        totalTwist += std::abs((c.normals[k + 1] - c.normals[k]).dot(0.5 * b));
+        totalTurn += (c.tangents[k + 1] - c.tangents[k]).norm();
         // Radius changes smoothly: < 0.5 mm per 1 mm step (the steepest is the
         // narrowing at a sharp flexure, spread over +-25 mm).
         EXPECT_LT(std::abs(c.radius[k + 1] - c.radius[k]), 5e-4);
@@ -67,6 +69,9 @@ TEST_P(ColonLayoutCase, FramesAreOrthonormalAndRotationMinimising)
             EXPECT_LT(curvature * c.radius[k], kMaxBendRatio + 0.05) << "at sample " << i;
         }
     }
+    // A Frenet frame would twist by the torsion, comparable to the turning;
+    // the rotation-minimising frame twists by discretisation error only.
+    EXPECT_LT(totalTwist, 0.02 * totalTurn) << "twist " << totalTwist << " rad, turn " << totalTurn << " rad";
 }
 
 TEST_P(ColonLayoutCase, AnatomyIsOnTheExpectedSides)

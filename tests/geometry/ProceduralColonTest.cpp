@@ -49,11 +49,12 @@ TEST_F(ProceduralColon, NormalsPointOutOfTheLumen)
     for (const auto& t : mesh.triangles) {
         const Eigen::Vector3d a = mesh.vertices.col(t[0]);
         const Eigen::Vector3d normal = (mesh.vertices.col(t[1]) - a).cross(mesh.vertices.col(t[2]) - a);
-        const Eigen::Vector3d centroid = (a + mesh.vertices.col(t[1]) + mesh.vertices.col(t[2])) / 3.0;
-        double s = 0.0;
-        for (int k : t) s += anatomy().physicsNodes[static_cast<std::size_t>(k)].arcLength / 3.0;
-        const Eigen::Vector3d axisPoint = sampleCentreline(anatomy().centreline, s).point;
-        ASSERT_GT(normal.dot(centroid - axisPoint), 0.0);
+        // Sum of each corner's offset from its own ring centre.
+        Eigen::Vector3d radial = Eigen::Vector3d::Zero();
+        for (int k : t) {
+            radial += mesh.vertices.col(k) - sampleCentreline(anatomy().centreline, anatomy().physicsNodes[static_cast<std::size_t>(k)].arcLength).point;
+        }
+        ASSERT_GT(normal.dot(radial), 0.0);
     }
 }
 
