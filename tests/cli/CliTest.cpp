@@ -1,0 +1,132 @@
+// The `colonosim` executable as a person or a script uses it: exit status 0
+// on success and 2 on bad input, messages that name the field, the value and
+// the allowed range, and machine-readable JSON.
+
+#include "simcore/geometry/MeshExport.h"
+#include "simcore/geometry/ProceduralColon.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <sys/wait.h>
+
+namespace {
+
+struct Result {
+    int status = -1;
+    std::string output;  ///< stdout and stderr together
+};
+
+/// Runs colonosim; stderr joins stdout unless `stdoutOnly`.
+Result run(const std::string& arguments, bool stdoutOnly = false)
+{
+    const std::string command =
+        std::string(COLONOSIM_EXECUTABLE) + " " + arguments + (stdoutOnly ? " 2>/dev/null" : " 2>&1");
+    Result result;
+    FILE* pipe = popen(command.c_str(), "r");
+    std::array<char, 4096> buffer{};
+    while (fgets(buffer.data(), buffer.size(), pipe) != nullptr) {
+        result.output += buffer.data();
+    }
+    const int raw = pclose(pipe);
+    result.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    return result;
+}
+
+std::filesystem::path tempDir()
+{
+    std::random_device device;
+    const auto dir = std::filesystem::temp_directory_path() / ("colonosim_cli_" + std::to_string(device()));
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+TEST(Cli, HelpExitsZero)
+{
+    const Result r = run("--help");
+    EXPECT_EQ(r.status, 0);
+    EXPECT_NE(r.output.find("demo"), std::string::npos);
+    for (const char* sub : {"demo --help", "params --help", "mesh --help", "bench --help"}) {
+        EXPECT_EQ(run(sub).status, 0) << sub;
+    }
+}
+
+TEST(Cli, UnknownSubcommandAndOptionExitTwo)
+{
+    EXPECT_EQ(run("fly").status, 2);
+    const Result r = run("demo --speed 3");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.output.find("--speed"), std::string::npos) << r.output;
+}
+
+TEST(Cli, OutOfRangeNumberNamesOptionValueAndRange)
+{
+    for (const char* bad : {"--duration -1", "--duration abc", "--duration nan", "--duration 1e9"}) {
+        const Result r = run(std::string("demo ") + bad);
+        EXPECT_EQ(r.status, 2) << bad;
+        EXPECT_NE(r.output.find("--duration"), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find("[0.05, 60] s"), std::string::npos) << r.output;
+    }
+}
+
+TEST(Cli, UnknownIntegratorIsRefusedWithTheAllowedNames)
+{
+    const Result r = run("demo --integrator verlet");
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.output.find("verlet"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("symplectic_euler"), std::string::npos) << r.output;
+}
+
+TEST(Cli, DemoRunsAndReportsJson)
+{
+    const Result r = run("demo --duration 0.06 --json", true);
+    ASSERT_EQ(r.status, 0) << r.output;
+    const nlohmann::json summary = nlohmann::json::parse(r.output);
+    EXPECT_GE(summary["physics_nodes"].get<int>(), 1800);
+    EXPECT_GE(summary["visual_vertices"].get<int>(), 50000);
+    EXPECT_EQ(summary["rejected_steps"].get<int>(), 0);
+    EXPECT_GT(summary["push_displacement_m"].get<double>(), 0.0);
+    EXPECT_LT(summary["max_displacement_m"].get<double>(), 0.1);
+}
+
+TEST(Cli, ParameterDocumentationIsUpToDate)
+{
+    const Result r = run("params --markdown");
+    ASSERT_EQ(r.status, 0);
+    EXPECT_NE(r.output.find("`tissue.wallYoungModulus` | Pa | 1.74e+06"), std::string::npos) << r.output;
+    std::ifstream file(std::string(COLONOSIM_SOURCE_DIR) + "/docs/parameters.md");
+    std::stringstream committed;
+    committed << file.rdbuf();
+    EXPECT_EQ(committed.str(), r.output) << "regenerate docs/parameters.md with `colonosim params --markdown`";
+}
+
+TEST(Cli, MeshInspectReadsAGoodFileAndRefusesBadOnes)
+{
+    const auto dir = tempDir();
+    const auto anatomy = colonosim::geometry::buildProceduralColon(colonosim::geometry::AnatomyParameters{});
+    const auto good = dir / "colon.stl";
+    colonosim::geometry::writeStl(good, anatomy.physicsMesh, colonosim::geometry::MeshEncoding::Binary);
+    const Result ok = run("mesh inspect " + good.string() + " --json");
+    ASSERT_EQ(ok.status, 0) << ok.output;
+    const nlohmann::json report = nlohmann::json::parse(ok.output);
+    EXPECT_EQ(report["triangles"].get<int>(), anatomy.physicsMesh.numTriangles());
+
+    const Result missing = run("mesh inspect " + (dir / "absent.obj").string());
+    EXPECT_EQ(missing.status, 2);
+    EXPECT_NE(missing.output.find("absent.obj"), std::string::npos) << missing.output;
+
+    const auto junk = dir / "junk.ply";
+    std::ofstream(junk) << "this is not a mesh\n";
+    const Result bad = run("mesh inspect " + junk.string());
+    EXPECT_EQ(bad.status, 2);
+    EXPECT_NE(bad.output.find("junk.ply"), std::string::npos) << bad.output;
+    std::filesystem::remove_all(dir);
+}
+
+}  // namespace

@@ -1,0 +1,67 @@
+/// \file
+/// `colonosim`: with no arguments, the trainer (until the trainer issue lands,
+/// the headless demonstration); with a subcommand, a headless tool.
+/// Exit status: 0 success, 1 failure of the run itself, 2 bad input.
+
+#include "simcore/geometry/MeshImport.h"
+#include "simcore/params/Parameter.h"
+#include "trainer_ui/cli/CommandLine.h"
+#include "trainer_ui/cli/Commands.h"
+
+#include <cstring>
+#include <iostream>
+#include <span>
+#include <string>
+
+namespace {
+void printUsage()
+{
+    std::cout << "usage: colonosim [SUBCOMMAND] [OPTIONS]\n"
+                 "With no subcommand: the headless demonstration (the trainer arrives later).\n"
+                 "Subcommands (each has --help):\n"
+                 "  demo        headless demonstration of the colon simulation\n"
+                 "  params      declared physical parameters with units, ranges and sources\n"
+                 "  mesh        import and check a patient-specific colon surface\n"
+                 "  bench       speed-versus-error report: bench [--quick] --out DIR\n";
+}
+}  // namespace
+
+int main(int argc, char** argv)
+{
+    using namespace colonosim;
+    const std::span<char* const> all(argv, static_cast<size_t>(argc));
+    const std::string command = argc > 1 ? argv[1] : "demo";
+    const std::span<char* const> rest = argc > 1 ? all.subspan(2) : all.subspan(1);
+    try {
+        if (command == "--help" || command == "-h" || command == "help") {
+            printUsage();
+            return 0;
+        }
+        if (command == "demo") {
+            return cli::runDemo(rest);
+        }
+        if (command == "params") {
+            return cli::runParams(rest);
+        }
+        if (command == "mesh") {
+            return cli::runMesh(rest);
+        }
+        if (command == "bench") {
+            return cli::runBench(rest);
+        }
+        std::cerr << "colonosim: unknown subcommand \"" << command << "\" (see colonosim --help)\n";
+        return 2;
+    } catch (const cli::UsageError& error) {
+        std::cerr << "colonosim " << command << ": " << error.what() << '\n';
+        return 2;
+    } catch (const params::ParameterError& error) {
+        std::cerr << "colonosim " << command << ": " << error.what() << '\n';
+        return 2;
+    } catch (const geometry::MeshImportError& error) {
+        std::cerr << error.what() << '\n';
+        return 2;
+    } catch (const std::exception& error) {
+        std::cerr << "colonosim " << command << ": " << error.what() << '\n';
+        return 1;
+    }
+}

@@ -1,0 +1,15 @@
+#pragma once
+/// \file
+/// The headless subcommands of `colonosim`. Each returns the exit status:
+/// 0 on success, 2 on bad input (after printing a message to stderr).
+
+#include <span>
+
+namespace colonosim::cli {
+
+int runDemo(std::span<char* const> args);
+int runParams(std::span<char* const> args);
+int runMesh(std::span<char* const> args);
+int runBench(std::span<char* const> args);
+
+}  // namespace colonosim::cli
