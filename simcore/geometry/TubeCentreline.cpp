@@ -3,25 +3,77 @@
 #include "simcore/geometry/AnatomyParameters.h"
 #include "simcore/geometry/CentrelineSampling.h"
 
-#include <Eigen/Geometry>
-
 #include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
-#include <map>
 #include <queue>
-#include <set>
+#include <utility>
 
 namespace colonosim::geometry {
 
 namespace {
 
-using Adjacency = std::vector<std::vector<std::pair<int, double>>>;
+constexpr double kInf = std::numeric_limits<double>::infinity();
 
-std::vector<double> geodesic(const Adjacency& adj, const std::vector<int>& sources)
+/// Undirected edge graph in compressed rows, plus the boundary edges.
+struct EdgeGraph {
+    std::vector<int> offset;  ///< numVertices + 1
+    std::vector<int> neighbour;
+    std::vector<double> length;
+    std::vector<std::pair<int, int>> boundary;  ///< edges used by exactly one triangle
+    double meanEdge = 0.0;
+};
+
+EdgeGraph buildGraph(const TriangleMesh& mesh)
 {
-    std::vector<double> dist(adj.size(), std::numeric_limits<double>::infinity());
+    const auto numV = static_cast<std::size_t>(mesh.numVertices());
+    std::vector<std::pair<int, int>> halfEdges;
+    halfEdges.reserve(3 * mesh.triangles.size());
+    for (const auto& t : mesh.triangles) {
+        for (std::size_t k = 0; k < 3; ++k) {
+            const int a = t[k], b = t[(k + 1) % 3];
+            if (a != b) halfEdges.emplace_back(std::min(a, b), std::max(a, b));
+        }
+    }
+    std::sort(halfEdges.begin(), halfEdges.end());
+    EdgeGraph g;
+    std::vector<std::pair<int, int>> edges;
+    for (std::size_t i = 0; i < halfEdges.size();) {
+        std::size_t j = i;
+        while (j < halfEdges.size() && halfEdges[j] == halfEdges[i]) ++j;
+        edges.push_back(halfEdges[i]);
+        if (j - i == 1) g.boundary.push_back(halfEdges[i]);
+        i = j;
+    }
+    g.offset.assign(numV + 1, 0);
+    for (const auto& [a, b] : edges) {
+        ++g.offset[static_cast<std::size_t>(a) + 1];
+        ++g.offset[static_cast<std::size_t>(b) + 1];
+    }
+    for (std::size_t v = 0; v < numV; ++v) g.offset[v + 1] += g.offset[v];
+    g.neighbour.resize(2 * edges.size());
+    g.length.resize(2 * edges.size());
+    std::vector<int> fill(g.offset.begin(), g.offset.end() - 1);
+    double sum = 0.0;
+    for (const auto& [a, b] : edges) {
+        const double len = (mesh.vertices.col(a) - mesh.vertices.col(b)).norm();
+        sum += len;
+        const auto ia = static_cast<std::size_t>(fill[static_cast<std::size_t>(a)]++);
+        const auto ib = static_cast<std::size_t>(fill[static_cast<std::size_t>(b)]++);
+        g.neighbour[ia] = b;
+        g.length[ia] = len;
+        g.neighbour[ib] = a;
+        g.length[ib] = len;
+    }
+    g.meanEdge = edges.empty() ? 0.0 : sum / static_cast<double>(edges.size());
+    return g;
+}
+
+/// Dijkstra over the edge graph from several sources: O(E log V).
+std::vector<double> geodesic(const EdgeGraph& g, const std::vector<int>& sources)
+{
+    std::vector<double> dist(g.offset.size() - 1, kInf);
     using Item = std::pair<double, int>;
     std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
     for (int s : sources) {
@@ -32,49 +84,60 @@ std::vector<double> geodesic(const Adjacency& adj, const std::vector<int>& sourc
         const auto [d, v] = queue.top();
         queue.pop();
         if (d > dist[static_cast<std::size_t>(v)]) continue;
-        for (const auto& [w, len] : adj[static_cast<std::size_t>(v)]) {
-            if (d + len < dist[static_cast<std::size_t>(w)]) {
-                dist[static_cast<std::size_t>(w)] = d + len;
-                queue.push({d + len, w});
+        for (int e = g.offset[static_cast<std::size_t>(v)]; e < g.offset[static_cast<std::size_t>(v) + 1]; ++e) {
+            const auto w = static_cast<std::size_t>(g.neighbour[static_cast<std::size_t>(e)]);
+            const double dw = d + g.length[static_cast<std::size_t>(e)];
+            if (dw < dist[w]) {
+                dist[w] = dw;
+                queue.push({dw, static_cast<int>(w)});
             }
         }
     }
     return dist;
 }
 
-/// Open boundary loops, longest first (vertex lists).
-std::vector<std::vector<int>> boundaryLoops(const TriangleMesh& mesh)
+int argmaxFinite(const std::vector<double>& d)
 {
-    std::map<std::pair<int, int>, int> count;
-    for (const auto& t : mesh.triangles) {
-        for (int k = 0; k < 3; ++k) {
-            const int a = t[static_cast<std::size_t>(k)], b = t[static_cast<std::size_t>((k + 1) % 3)];
-            ++count[{std::min(a, b), std::max(a, b)}];
+    int best = 0;
+    double value = -1.0;
+    for (std::size_t v = 0; v < d.size(); ++v) {
+        if (std::isfinite(d[v]) && d[v] > value) {
+            value = d[v];
+            best = static_cast<int>(v);
         }
     }
-    std::map<int, std::vector<int>> link;
-    for (const auto& [e, n] : count) {
-        if (n == 1) {
-            link[e.first].push_back(e.second);
-            link[e.second].push_back(e.first);
-        }
+    return best;
+}
+
+/// Open boundary loops (connected sets of boundary edges), longest first.
+std::vector<std::vector<int>> boundaryLoops(const EdgeGraph& g, std::size_t numV)
+{
+    std::vector<std::vector<int>> link(numV);
+    for (const auto& [a, b] : g.boundary) {
+        link[static_cast<std::size_t>(a)].push_back(b);
+        link[static_cast<std::size_t>(b)].push_back(a);
     }
+    std::vector<char> used(numV, 0);
     std::vector<std::vector<int>> loops;
-    std::set<int> used;
-    for (const auto& [start, unused] : link) {
-        if (used.contains(start)) continue;
+    for (std::size_t start = 0; start < numV; ++start) {
+        if (link[start].empty() || used[start] != 0) continue;
         std::vector<int> loop;
-        std::vector<int> stack{start};
+        std::vector<int> stack{static_cast<int>(start)};
+        used[start] = 1;
         while (!stack.empty()) {
             const int v = stack.back();
             stack.pop_back();
-            if (!used.insert(v).second) continue;
             loop.push_back(v);
-            for (int w : link[v]) stack.push_back(w);
+            for (int w : link[static_cast<std::size_t>(v)]) {
+                if (used[static_cast<std::size_t>(w)] == 0) {
+                    used[static_cast<std::size_t>(w)] = 1;
+                    stack.push_back(w);
+                }
+            }
         }
-        loops.push_back(loop);
+        loops.push_back(std::move(loop));
     }
-    std::sort(loops.begin(), loops.end(), [](const auto& a, const auto& b) { return a.size() > b.size(); });
+    std::stable_sort(loops.begin(), loops.end(), [](const auto& a, const auto& b) { return a.size() > b.size(); });
     return loops;
 }
 
@@ -85,23 +148,71 @@ Eigen::Vector3d centroid(const TriangleMesh& mesh, const std::vector<int>& verti
     return c / static_cast<double>(std::max<std::size_t>(1, vertices.size()));
 }
 
-/// Arc length of the nearest point of `p` on `polyline` (cumulative lengths `cum`).
-double project(const std::vector<Eigen::Vector3d>& polyline, const std::vector<double>& cum, const Eigen::Vector3d& p, double* distance)
+double meanDistance(const TriangleMesh& mesh, const std::vector<int>& vertices, const Eigen::Vector3d& c)
 {
-    double best = std::numeric_limits<double>::infinity();
-    double bestS = 0.0;
-    for (std::size_t i = 0; i + 1 < polyline.size(); ++i) {
-        const Eigen::Vector3d d = polyline[i + 1] - polyline[i];
-        const double len2 = d.squaredNorm();
-        const double u = len2 > 0.0 ? std::clamp((p - polyline[i]).dot(d) / len2, 0.0, 1.0) : 0.0;
-        const double dist = (polyline[i] + u * d - p).squaredNorm();
-        if (dist < best) {
-            best = dist;
-            bestS = cum[i] + u * std::sqrt(len2);
+    double sum = 0.0;
+    for (int v : vertices) sum += (mesh.vertices.col(v) - c).norm();
+    return sum / static_cast<double>(std::max<std::size_t>(1, vertices.size()));
+}
+
+/// One cross-section: the iso-contour of a scalar field at one level.
+struct Section {
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();  ///< length-weighted centroid of the contour
+    double radius = 0.0;                              ///< length-weighted mean distance of the contour from the centre
+    double contourLength = 0.0;
+};
+
+/// Iso-contours of the piecewise-linear `field` at levels first + k step,
+/// k = 0..count-1 (marching triangles). Each triangle visits only the levels
+/// inside its value range, so the cost is O(F + number of contour segments).
+std::vector<Section> levelSets(const TriangleMesh& mesh, const std::vector<double>& field, double first, double step, int count)
+{
+    struct Piece {
+        int level;
+        Eigen::Vector3d p, q;
+    };
+    std::vector<Piece> pieces;
+    std::vector<Section> sections(static_cast<std::size_t>(count));
+    for (const auto& t : mesh.triangles) {
+        const double f[3] = {field[static_cast<std::size_t>(t[0])], field[static_cast<std::size_t>(t[1])], field[static_cast<std::size_t>(t[2])]};
+        if (!std::isfinite(f[0]) || !std::isfinite(f[1]) || !std::isfinite(f[2])) continue;
+        const double lo = std::min({f[0], f[1], f[2]});
+        const double hi = std::max({f[0], f[1], f[2]});
+        // Levels l with lo < l <= hi: vertices with f >= l are "above".
+        int k0 = std::max(0, static_cast<int>(std::ceil((lo - first) / step)));
+        if (first + k0 * step <= lo) ++k0;
+        const int k1 = std::min(count - 1, static_cast<int>(std::floor((hi - first) / step)));
+        for (int k = k0; k <= k1; ++k) {
+            const double level = first + k * step;
+            Eigen::Vector3d ends[2];
+            int n = 0;
+            for (std::size_t e = 0; e < 3 && n < 2; ++e) {
+                const std::size_t e1 = (e + 1) % 3;
+                if ((f[e] >= level) != (f[e1] >= level)) {
+                    const double u = (level - f[e]) / (f[e1] - f[e]);
+                    ends[n++] = (1.0 - u) * mesh.vertices.col(t[e]) + u * mesh.vertices.col(t[e1]);
+                }
+            }
+            if (n < 2) continue;
+            const double len = (ends[1] - ends[0]).norm();
+            Section& s = sections[static_cast<std::size_t>(k)];
+            s.centre += 0.5 * len * (ends[0] + ends[1]);
+            s.contourLength += len;
+            pieces.push_back({k, ends[0], ends[1]});
         }
     }
-    if (distance != nullptr) *distance = std::sqrt(best);
-    return bestS;
+    for (Section& s : sections) {
+        if (s.contourLength > 0.0) s.centre /= s.contourLength;
+    }
+    for (const Piece& piece : pieces) {
+        Section& s = sections[static_cast<std::size_t>(piece.level)];
+        const double len = (piece.q - piece.p).norm();
+        s.radius += 0.5 * len * ((piece.p - s.centre).norm() + (piece.q - s.centre).norm());
+    }
+    for (Section& s : sections) {
+        if (s.contourLength > 0.0) s.radius /= s.contourLength;
+    }
+    return sections;
 }
 
 std::vector<double> cumulative(const std::vector<Eigen::Vector3d>& p)
@@ -111,13 +222,166 @@ std::vector<double> cumulative(const std::vector<Eigen::Vector3d>& p)
     return c;
 }
 
-void smooth(std::vector<Eigen::Vector3d>& p, int iterations)
+/// Linear interpolation of y(x) at `x` (x ascending; clamped at the ends).
+double interpolate(const std::vector<double>& xs, const std::vector<double>& ys, double x)
 {
-    for (int it = 0; it < iterations; ++it) {
-        std::vector<Eigen::Vector3d> q = p;
-        for (std::size_t i = 1; i + 1 < p.size(); ++i) q[i] = 0.25 * p[i - 1] + 0.5 * p[i] + 0.25 * p[i + 1];
-        p = q;
+    if (xs.empty()) return 0.0;
+    if (x <= xs.front()) return ys.front();
+    if (x >= xs.back()) return ys.back();
+    const auto i = static_cast<std::size_t>(std::upper_bound(xs.begin(), xs.end(), x) - xs.begin());
+    const double span = xs[i] - xs[i - 1];
+    const double u = span > 0.0 ? (x - xs[i - 1]) / span : 0.0;
+    return (1.0 - u) * ys[i - 1] + u * ys[i];
+}
+
+/// The centreline as it is being refined: points with the radius of the
+/// section each came from (the end points take their neighbour's).
+struct Axis {
+    std::vector<Eigen::Vector3d> points;
+    std::vector<double> radius;
+};
+
+/// End point of the tube at one end: an open loop's centroid, else a vertex
+/// (a cap's apex, or an end of the diameter).
+struct End {
+    Eigen::Vector3d point = Eigen::Vector3d::Zero();
+    double radius = 0.0;
+    bool open = false;
+};
+
+/// Axis from the sections of `field` (range [0, total]), between the two ends.
+/// `levelOf` receives the field value of each axis point.
+Axis axisFromSections(const TriangleMesh& mesh, const std::vector<double>& field, double total, double spacing, const End& start,
+                      const End& end, std::vector<double>* levelOf)
+{
+    const int count = std::max(4, static_cast<int>(std::lround(total / spacing)));
+    const double step = total / count;
+    const std::vector<Section> sections = levelSets(mesh, field, 0.5 * step, step, count);
+    Axis axis;
+    levelOf->clear();
+    axis.points.push_back(start.point);
+    axis.radius.push_back(start.radius);
+    levelOf->push_back(0.0);
+    for (std::size_t k = 0; k < sections.size(); ++k) {
+        if (sections[k].contourLength <= 0.0) continue;
+        axis.points.push_back(sections[k].centre);
+        axis.radius.push_back(sections[k].radius);
+        levelOf->push_back((static_cast<double>(k) + 0.5) * step);
     }
+    axis.points.push_back(end.point);
+    axis.radius.push_back(end.radius);
+    levelOf->push_back(total);
+    if (!start.open && axis.radius.size() > 2) axis.radius.front() = axis.radius[1];
+    if (!end.open && axis.radius.size() > 2) axis.radius.back() = axis.radius[axis.radius.size() - 2];
+    // Light smoothing (ends fixed): the sections are already smooth.
+    std::vector<Eigen::Vector3d> q = axis.points;
+    for (std::size_t i = 1; i + 1 < q.size(); ++i) q[i] = 0.25 * axis.points[i - 1] + 0.5 * axis.points[i] + 0.25 * axis.points[i + 1];
+    axis.points = q;
+    return axis;
+}
+
+/// Arc length of each vertex's nearest point on the axis, searched only
+/// within +-window(s) of its current estimate `s` (a topological
+/// neighbourhood: parts of the tube that are close in space but far along
+/// the tube are never candidates). Replaces `s`.
+void projectLocally(const TriangleMesh& mesh, const Axis& axis, std::vector<double>& s)
+{
+    const std::vector<double> cum = cumulative(axis.points);
+    for (std::size_t v = 0; v < s.size(); ++v) {
+        if (!std::isfinite(s[v])) continue;
+        const Eigen::Vector3d p = mesh.vertices.col(static_cast<Eigen::Index>(v));
+        const double r = interpolate(cum, axis.radius, s[v]);
+        const double window = 3.0 * r + 2.0 * (cum.back() / static_cast<double>(std::max<std::size_t>(1, cum.size() - 1)));
+        const auto lo = static_cast<std::size_t>(std::max<std::ptrdiff_t>(0, (std::lower_bound(cum.begin(), cum.end(), s[v] - window) - cum.begin()) - 1));
+        const auto hi = std::min(cum.size() - 1, static_cast<std::size_t>(std::upper_bound(cum.begin(), cum.end(), s[v] + window) - cum.begin()));
+        double best = kInf;
+        double bestS = s[v];
+        for (std::size_t i = lo; i < hi; ++i) {
+            const Eigen::Vector3d d = axis.points[i + 1] - axis.points[i];
+            const double len2 = d.squaredNorm();
+            // Beyond the first and last points the axis is extended straight,
+            // so that the end loops' vertices get s <= 0 and s >= length.
+            const double lower = i == 0 ? -kInf : 0.0;
+            const double upper = i + 2 == cum.size() ? kInf : 1.0;
+            const double u = len2 > 0.0 ? std::clamp((p - axis.points[i]).dot(d) / len2, lower, upper) : 0.0;
+            const double dist = (axis.points[i] + u * d - p).squaredNorm();
+            if (dist < best) {
+                best = dist;
+                bestS = cum[i] + u * (cum[i + 1] - cum[i]);
+            }
+        }
+        s[v] = bestS;
+    }
+}
+
+/// Largest section radius over the last stretch of a closed end: scanning
+/// from the end, until the stretch is three such radii long.
+double tubeRadiusNearEnd(const std::vector<double>& fromEnd, const std::vector<double>& radius)
+{
+    double peak = 0.0;
+    for (std::size_t i = 0; i < fromEnd.size(); ++i) {
+        peak = std::max(peak, radius[i]);
+        if (i > 2 && fromEnd[i] > 3.0 * peak) break;
+    }
+    return peak;
+}
+
+/// Arc length at which a closed end's cap begins, measured from that end
+/// (0 for an open end). Sections on a cap shrink towards its apex; the cap
+/// starts where the section radius falls below 90% of the tube's radius just
+/// before it (the largest over the last three radii of the tube).
+double capLength(const std::vector<double>& fromEnd, const std::vector<double>& radius)
+{
+    const double threshold = 0.9 * tubeRadiusNearEnd(fromEnd, radius);
+    for (std::size_t k = 0; k < fromEnd.size(); ++k) {
+        if (radius[k] >= threshold) {
+            if (k == 0) return 0.0;
+            const double u = (threshold - radius[k - 1]) / (radius[k] - radius[k - 1]);
+            return fromEnd[k - 1] + std::clamp(u, 0.0, 1.0) * (fromEnd[k] - fromEnd[k - 1]);
+        }
+    }
+    return 0.0;
+}
+
+/// The apex of a closed end: of the vertices within two tube radii of the
+/// end (by their slice coordinate `s`, so topologically), the one farthest
+/// along the axis direction there. The farthest vertex by geodesic distance
+/// is usually on the rim of the cap (the outer wall of the last bend is
+/// longer), which would pull the end of the axis sideways.
+int capApex(const TriangleMesh& mesh, const Axis& axis, const std::vector<double>& s, bool atEnd)
+{
+    std::vector<double> cum = cumulative(axis.points);
+    const double length = cum.back();
+    std::vector<double> fromEnd, radius;
+    std::vector<Eigen::Vector3d> points;
+    for (std::size_t k = 0; k < cum.size(); ++k) {
+        const std::size_t i = atEnd ? cum.size() - 1 - k : k;
+        fromEnd.push_back(atEnd ? length - cum[i] : cum[i]);
+        radius.push_back(axis.radius[i]);
+        points.push_back(axis.points[i]);
+    }
+    const double r = tubeRadiusNearEnd(fromEnd, radius);
+    const auto at = [&](double d) {
+        const auto i = static_cast<std::size_t>(std::clamp<std::ptrdiff_t>(std::upper_bound(fromEnd.begin(), fromEnd.end(), d) - fromEnd.begin(), 1,
+                                                                            static_cast<std::ptrdiff_t>(fromEnd.size()) - 1));
+        const double span = fromEnd[i] - fromEnd[i - 1];
+        const double u = span > 0.0 ? std::clamp((d - fromEnd[i - 1]) / span, 0.0, 1.0) : 0.0;
+        return Eigen::Vector3d((1.0 - u) * points[i - 1] + u * points[i]);
+    };
+    const Eigen::Vector3d base = at(r);
+    const Eigen::Vector3d direction = (base - at(3.0 * r)).normalized();
+    int best = -1;
+    double farthest = -kInf;
+    for (std::size_t v = 0; v < s.size(); ++v) {
+        if (!std::isfinite(s[v])) continue;
+        if ((atEnd ? length - s[v] : s[v]) > 2.0 * r) continue;
+        const double along = (mesh.vertices.col(static_cast<Eigen::Index>(v)) - base).dot(direction);
+        if (along > farthest) {
+            farthest = along;
+            best = static_cast<int>(v);
+        }
+    }
+    return best;
 }
 
 }  // namespace
@@ -125,118 +389,137 @@ void smooth(std::vector<Eigen::Vector3d>& p, int iterations)
 Centreline computeCentreline(const TriangleMesh& mesh)
 {
     const auto numV = static_cast<std::size_t>(mesh.numVertices());
-    Adjacency adj(numV);
-    double edgeSum = 0.0;
-    for (const auto& t : mesh.triangles) {
-        for (int k = 0; k < 3; ++k) {
-            const int u = t[static_cast<std::size_t>(k)], v = t[static_cast<std::size_t>((k + 1) % 3)];
-            const double len = (mesh.vertices.col(u) - mesh.vertices.col(v)).norm();
-            adj[static_cast<std::size_t>(u)].push_back({v, len});
-            adj[static_cast<std::size_t>(v)].push_back({u, len});
-            edgeSum += len;
-        }
-    }
-    const double meanEdge = edgeSum / std::max<std::size_t>(1, 3 * mesh.triangles.size());
-    const auto loops = boundaryLoops(mesh);
+    const EdgeGraph graph = buildGraph(mesh);
+    const auto loops = boundaryLoops(graph, numV);
+
+    // 1. Geodesic distance from one end (the longest open loop: the anus;
+    //    without an open loop, one end of the diameter of two sweeps), and
+    //    from the other end (the second loop, else the farthest vertex).
+    End start, end;
     std::vector<int> sources;
     if (!loops.empty()) {
         sources = loops.front();
+        start.point = centroid(mesh, sources);
+        start.radius = meanDistance(mesh, sources, start.point);
+        start.open = true;
     } else {
-        const auto d0 = geodesic(adj, {0});
-        sources = {static_cast<int>(std::max_element(d0.begin(), d0.end()) - d0.begin())};
+        sources = {argmaxFinite(geodesic(graph, {0}))};
+        start.point = mesh.vertices.col(sources.front());
     }
-    const std::vector<double> g = geodesic(adj, sources);
+    std::vector<int> farSources;
+    if (loops.size() > 1) {
+        farSources = loops[1];
+        end.point = centroid(mesh, farSources);
+        end.radius = meanDistance(mesh, farSources, end.point);
+        end.open = true;
+    }
 
-    // Bin by a parameter per vertex; returns slice centroids between the ends.
-    const auto slicesBy = [&](const std::vector<double>& param, double total, int numSlices) {
-        std::vector<Eigen::Vector3d> sum(static_cast<std::size_t>(numSlices), Eigen::Vector3d::Zero());
-        std::vector<double> weight(static_cast<std::size_t>(numSlices), 0.0);
+    // 2. Topological slices: level sets of u = g0 / (g0 + g1) (times the
+    //    length), with g1 the geodesic distance from the other end. A level
+    //    set is one ring of the tube however close other loops of the colon
+    //    come in space, and u = 0 and 1 exactly on the end loops.
+    const double spacing = std::max(graph.meanEdge, 1e-9);
+    std::vector<double> s(numV, kInf);
+    std::vector<double> levelOf;
+    Axis axis;
+    const auto slice = [&] {
+        const std::vector<double> g0 = geodesic(graph, sources);
+        if (farSources.empty()) {
+            farSources = {argmaxFinite(g0)};
+            end.point = mesh.vertices.col(farSources.front());
+        }
+        const std::vector<double> g1 = geodesic(graph, farSources);
+        double total = 0.0;
+        for (int v : farSources) total += g0[static_cast<std::size_t>(v)];
+        total /= static_cast<double>(farSources.size());
         for (std::size_t v = 0; v < numV; ++v) {
-            if (!std::isfinite(param[v])) continue;
-            const auto bin = static_cast<std::size_t>(std::clamp(static_cast<int>(param[v] / total * numSlices), 0, numSlices - 1));
-            // Unweighted: on a bent tube an area-weighted centroid sits
-            // kappa r^2 / 2 outside the axis (the outer wall is longer).
-            sum[bin] += mesh.vertices.col(static_cast<Eigen::Index>(v));
-            weight[bin] += 1.0;
+            const double sum = g0[v] + g1[v];
+            s[v] = std::isfinite(sum) ? (sum > 0.0 ? total * g0[v] / sum : 0.0) : kInf;
         }
-        std::vector<Eigen::Vector3d> polyline;
-        if (!loops.empty()) polyline.push_back(centroid(mesh, loops[0]));
-        for (std::size_t i = 0; i < sum.size(); ++i) {
-            if (weight[i] > 0.0) polyline.push_back(sum[i] / weight[i]);
+        axis = axisFromSections(mesh, s, total, spacing, start, end, &levelOf);
+        // From level to arc length along the axis.
+        const std::vector<double> cum = cumulative(axis.points);
+        for (double& sv : s) {
+            if (std::isfinite(sv)) sv = interpolate(levelOf, cum, sv);
         }
-        if (loops.size() > 1) polyline.push_back(centroid(mesh, loops[1]));
-        return polyline;
     };
-    double maxG = 0.0;
-    for (double d : g) if (std::isfinite(d)) maxG = std::max(maxG, d);
-    // Distance from the other end as well: u = g0 / (g0 + g1) has level sets
-    // much closer to cross-sections than g0 alone, which lags on the inner
-    // side of every bend.
-    const std::vector<int> farEnd = loops.size() > 1
-        ? loops[1]
-        : std::vector<int>{static_cast<int>(std::max_element(g.begin(), g.end(), [](double a, double b) {
-              return (std::isfinite(a) ? a : -1.0) < (std::isfinite(b) ? b : -1.0);
-          }) - g.begin())};
-    const std::vector<double> g1 = geodesic(adj, farEnd);
-    std::vector<double> u(numV, 0.0);
-    for (std::size_t v = 0; v < numV; ++v) {
-        const double sum = g[v] + g1[v];
-        u[v] = sum > 0.0 && std::isfinite(sum) ? maxG * g[v] / sum : 0.0;
-    }
-    const int numSlices = std::max(4, static_cast<int>(maxG / (2.0 * meanEdge)));
-    std::vector<Eigen::Vector3d> polyline = slicesBy(u, maxG * (1.0 + 1e-9), numSlices);
-    smooth(polyline, 3);
-
-    std::vector<double> s(numV, 0.0);
-    std::vector<double> axisDistance(numV, 0.0);
-    for (int refinement = 0; refinement < 3; ++refinement) {
-        const std::vector<double> cum = cumulative(polyline);
-        for (std::size_t v = 0; v < numV; ++v) s[v] = project(polyline, cum, mesh.vertices.col(static_cast<Eigen::Index>(v)), &axisDistance[v]);
-        const double length = cum.back();
-        const std::vector<Eigen::Vector3d> ends{polyline.front(), polyline.back()};
-        polyline = slicesBy(s, length * (1.0 + 1e-9), std::max(4, static_cast<int>(length / (2.0 * meanEdge))));
-        if (loops.empty()) {
-            polyline.insert(polyline.begin(), ends[0]);
-            polyline.push_back(ends[1]);
+    slice();
+    // A closed end starts from the apex of its cap, then the slices again.
+    if (!end.open || !start.open) {
+        if (!end.open) {
+            const int apex = capApex(mesh, axis, s, true);
+            if (apex >= 0) {
+                farSources = {apex};
+                end.point = mesh.vertices.col(apex);
+            }
         }
-        smooth(polyline, 3);
+        if (!start.open) {
+            const int apex = capApex(mesh, axis, s, false);
+            if (apex >= 0) {
+                sources = {apex};
+                start.point = mesh.vertices.col(apex);
+            }
+        }
+        slice();
     }
 
+    // 3. Perpendicular slices: each vertex takes the arc length of its nearest
+    //    axis point, searched only near its own slice; sections of that field
+    //    are perpendicular to the axis, which removes the skew of geodesic
+    //    level sets in bends. Twice.
+    for (int refinement = 0; refinement < 2; ++refinement) {
+        projectLocally(mesh, axis, s);
+        const double length = cumulative(axis.points).back();
+        axis = axisFromSections(mesh, s, length, spacing, start, end, &levelOf);
+    }
+
+    // 4. Closed ends: cut off the cap, where the sections shrink to its apex.
+    std::vector<double> cum = cumulative(axis.points);
+    double from = 0.0;
+    double to = cum.back();
+    if (!end.open) {
+        std::vector<double> fromEnd, radius;
+        for (std::size_t i = axis.points.size() - 1; i-- > 0;) {
+            fromEnd.push_back(cum.back() - cum[i]);
+            radius.push_back(axis.radius[i]);
+        }
+        to -= capLength(fromEnd, radius);
+    }
+    if (!start.open) {
+        const std::vector<double> fromStart(cum.begin() + 1, cum.end());
+        const std::vector<double> radius(axis.radius.begin() + 1, axis.radius.end());
+        from += capLength(fromStart, radius);
+    }
+    if (to <= from) {
+        from = 0.0;
+        to = cum.back();
+    }
+    std::vector<Eigen::Vector3d> polyline;
+    std::vector<double> polylineS, polylineR;
+    const auto pointAt = [&](double at) {
+        const auto i = static_cast<std::size_t>(std::clamp<std::ptrdiff_t>(std::upper_bound(cum.begin(), cum.end(), at) - cum.begin(), 1,
+                                                                            static_cast<std::ptrdiff_t>(cum.size()) - 1));
+        const double span = cum[i] - cum[i - 1];
+        const double u = span > 0.0 ? std::clamp((at - cum[i - 1]) / span, 0.0, 1.0) : 0.0;
+        return Eigen::Vector3d((1.0 - u) * axis.points[i - 1] + u * axis.points[i]);
+    };
+    polyline.push_back(pointAt(from));
+    for (std::size_t i = 0; i < axis.points.size(); ++i) {
+        if (cum[i] > from && cum[i] < to) polyline.push_back(axis.points[i]);
+    }
+    polyline.push_back(pointAt(to));
+    for (std::size_t i = 0; i < axis.points.size(); ++i) {
+        polylineS.push_back(cum[i] - from);
+        polylineR.push_back(axis.radius[i]);
+    }
+
+    // 5. Resampled by arc length (~1 mm), frames, radius from the sections.
     Centreline c;
     const double length = cumulative(polyline).back();
     c.points = resampleByArcLength(polyline, std::max(2, static_cast<int>(std::ceil(length / 0.001)) + 1));
     computeArcLengthAndFrames(c, -Eigen::Vector3d::UnitY());
-
-    // Radius: mean axis distance of the vertices projecting near each sample.
-    const std::vector<double> cum = cumulative(c.points);
-    std::vector<double> sum(c.points.size(), 0.0);
-    std::vector<int> count(c.points.size(), 0);
-    for (std::size_t v = 0; v < numV; ++v) {
-        double dist = 0.0;
-        const double sv = project(c.points, cum, mesh.vertices.col(static_cast<Eigen::Index>(v)), &dist);
-        const auto i = static_cast<std::size_t>(std::clamp(static_cast<int>(std::lround(sv / length * (c.numPoints() - 1))), 0, c.numPoints() - 1));
-        sum[i] += dist;
-        ++count[i];
-    }
-    c.radius.assign(c.points.size(), 0.0);
-    double last = 0.0;
-    for (std::size_t i = 0; i < c.points.size(); ++i) {
-        if (count[i] > 0) last = sum[i] / count[i];
-        c.radius[i] = last;
-    }
-    // Fill leading samples without vertices, then average over +-5 samples.
-    for (std::size_t i = c.points.size(); i-- > 0;) {
-        if (count[i] > 0) last = c.radius[i];
-        else if (c.radius[i] == 0.0) c.radius[i] = last;
-    }
-    std::vector<double> r = c.radius;
-    for (std::size_t i = 0; i < r.size(); ++i) {
-        double acc = 0.0;
-        int n = 0;
-        for (std::size_t j = i >= 5 ? i - 5 : 0; j <= std::min(r.size() - 1, i + 5); ++j) { acc += c.radius[j]; ++n; }
-        r[i] = acc / n;
-    }
-    c.radius = r;
+    c.radius.resize(c.points.size());
+    for (std::size_t i = 0; i < c.points.size(); ++i) c.radius[i] = interpolate(polylineS, polylineR, c.arcLength[i]);
 
     const AnatomyParameters defaults;
     c.segment.resize(c.points.size());
