@@ -71,9 +71,15 @@ say()
     echo "fresh-machine-check: $*"
 }
 
+# "1.5 min (90 s)" for a number of seconds.
+duration()
+{
+    awk -v x="$1" 'BEGIN { printf "%.1f min (%d s)", x / 60, x }'
+}
+
 minutes_since()
 {
-    awk -v s="$1" -v e="$(date +%s)" 'BEGIN { printf "%.1f", (e - s) / 60 }'
+    duration "$(($(date +%s) - $1))"
 }
 
 # Print the URI of the host's apt source that serves the given suite (deb822 and one-line formats).
@@ -110,7 +116,7 @@ stamp()
 # Seconds at the first log line matching a pattern (empty when none matches).
 seconds_at()
 {
-    grep -m1 -E "^\[ *[0-9]+ s\] ($2)" "$1" | sed -E 's/^\[ *([0-9]+) s\].*/\1/'
+    { grep -m1 -E "^\[ *[0-9]+ s\] ($2)" "$1" || true; } | sed -E 's/^\[ *([0-9]+) s\].*/\1/'
 }
 
 # Remove an extracted root, refusing while anything is still mounted beneath it.
@@ -174,7 +180,7 @@ make_base()
     tar -C "$stage" --numeric-owner -cf - . | zstd -q -T0 -o "$BASE_TAR.tmp"
     mv "$BASE_TAR.tmp" "$BASE_TAR"
     rm -rf "$stage"
-    SUMMARY+=("debootstrap: $(minutes_since "$t0") min")
+    SUMMARY+=("debootstrap: $(minutes_since "$t0")")
 }
 
 # check NAME COMMAND...: run COMMAND in /root/colonosim of a fresh root, logging to WORKDIR/NAME.log.
@@ -210,8 +216,8 @@ check()
     local verdict=PASS
     ((rc == 0)) || verdict="FAIL (exit $rc)"
     ((rc != 124)) || verdict="TIMEOUT"
-    SUMMARY+=("$name: $verdict, $took min")
-    say "$name: $verdict after $took min; last lines:"
+    SUMMARY+=("$name: $verdict, $took")
+    say "$name: $verdict after $took; last lines:"
     tail -n 5 "$log" | sed 's/^/    /'
     phases "$log"
     ((KEEP == 1)) || remove_root "$root"
@@ -227,13 +233,15 @@ phases()
     c="$(seconds_at "$log" 'setup: build (done|up to date)')"
     d="$(seconds_at "$log" 'setup: running')"
     e="$(tail -n1 "$log" | sed -nE 's/^\[ *([0-9]+) s\].*/\1/p')"
+    [[ -n "$d" ]] || d="$c"
     local parts=()
-    [[ -z "$a" || -z "$b" ]] || parts+=("apt install $(awk -v x="$((b - a))" 'BEGIN { printf "%.1f", x / 60 }') min")
-    [[ -z "$b" || -z "$c" ]] || parts+=("configure+build $(awk -v x="$((c - b))" 'BEGIN { printf "%.1f", x / 60 }') min")
-    [[ -z "$d" || -z "$e" ]] || parts+=("after build $(awk -v x="$((e - d))" 'BEGIN { printf "%.1f", x / 60 }') min")
+    [[ -z "$a" || -z "$b" ]] || parts+=("apt install $(duration "$((b - a))")")
+    [[ -z "$b" || -z "$c" ]] || parts+=("configure+build $(duration "$((c - b))")")
+    [[ -z "$d" || -z "$e" ]] || parts+=("tests or main job $(duration "$((e - d))")")
     if ((${#parts[@]} > 0)); then
-        local IFS=';'
-        SUMMARY+=("    ${parts[*]}")
+        local joined
+        joined="$(printf '%s, ' "${parts[@]}")"
+        SUMMARY+=("    ${joined%, }")
     fi
 }
 
@@ -243,7 +251,7 @@ check setup-test ./setup.sh test
 check setup-run timeout "$RUN_TIMEOUT" ./setup.sh run
 
 echo
-say "summary ($(git -C "$REPO" rev-parse --short HEAD), $(minutes_since "$T_START") min in all)"
+say "summary ($(git -C "$REPO" rev-parse --short HEAD), $(minutes_since "$T_START") in all)"
 printf '  %s\n' "${SUMMARY[@]}"
 for s in "${SUMMARY[@]}"; do
     [[ "$s" != *FAIL* && "$s" != *TIMEOUT* ]] || exit 1
