@@ -1,28 +1,32 @@
 #!/usr/bin/env bash
 # fresh-machine-check.sh: prove the README's two commands on a fresh Debian 12 root.
 #
-# Usage: tools/fresh-machine-check.sh [--keep] [--run-timeout SECONDS] WORKDIR
+# Usage: tools/fresh-machine-check.sh [--keep] [--ci] [--run-timeout SECONDS] WORKDIR
 #   e.g. sudo tools/fresh-machine-check.sh /var/tmp/colonosim-fresh
 #
 # 1. Builds (once, then reuses) WORKDIR/base-bookworm-minbase.tar.zst: a minimal
 #    `debootstrap --variant=minbase bookworm` root from the Debian mirror this machine's apt uses.
 # 2. For each check, extracts a fresh copy of that root, copies a fresh `git clone` of this
-#    repository (HEAD of the current branch) into /root/colonosim, bind-mounts proc, sys and dev,
+#    repository (the committed HEAD; uncommitted changes are left out) into /root/colonosim,
+#    bind-mounts proc, sys and dev,
 #    and runs the command in a chroot as root with no stdin:
 #       ./setup.sh test     -> WORKDIR/setup-test.log
 #       ./setup.sh run      -> WORKDIR/setup-run.log
 # 3. Unmounts everything on exit and prints a summary with the minutes each step took.
 #
 # --keep keeps the extracted roots (WORKDIR/root-test, WORKDIR/root-run) for inspection.
+# --ci also runs the CI job, `CI=true bash .ci/run`, in a third fresh root (WORKDIR/ci-run.log).
 # --run-timeout stops `./setup.sh run` after SECONDS (default 3600) and reports it as TIMEOUT.
 # MIRROR=http://... overrides the mirror. Needs root, debootstrap, git, tar and zstd.
 set -euo pipefail
 
 KEEP=0
+CI_CHECK=0
 RUN_TIMEOUT=3600
 while (($# > 0)); do
     case "$1" in
         --keep) KEEP=1 ;;
+        --ci) CI_CHECK=1 ;;
         --run-timeout)
             RUN_TIMEOUT="$2"
             shift
@@ -40,7 +44,7 @@ while (($# > 0)); do
     shift
 done
 if (($# != 1)); then
-    echo "usage: $0 [--keep] [--run-timeout SECONDS] WORKDIR" >&2
+    echo "usage: $0 [--keep] [--ci] [--run-timeout SECONDS] WORKDIR" >&2
     exit 2
 fi
 ((EUID == 0)) || {
@@ -188,7 +192,8 @@ check()
 {
     local name="$1"
     shift
-    local root="$WORKDIR/root-${name#setup-}" log="$WORKDIR/$name.log" t0 rc
+    local root="$WORKDIR/root-${name#setup-}"
+    [[ "$name" != ci-run ]] || root="$WORKDIR/root-ci" log="$WORKDIR/$name.log" t0 rc
     remove_root "$root"
     mkdir -p "$root"
     zstd -q -d -c "$BASE_TAR" | tar -C "$root" --numeric-owner -xf -
@@ -249,6 +254,7 @@ T_START="$(date +%s)"
 make_base
 check setup-test ./setup.sh test
 check setup-run timeout "$RUN_TIMEOUT" ./setup.sh run
+((CI_CHECK == 0)) || check ci-run env CI=true bash .ci/run
 
 echo
 say "summary ($(git -C "$REPO" rev-parse --short HEAD), $(minutes_since "$T_START") in all)"
