@@ -59,8 +59,9 @@ EOF
 # Install the packages of PACKAGES that dpkg does not report as installed.
 ensure_packages()
 {
-    command -v dpkg-query >/dev/null && command -v apt-get >/dev/null ||
+    if ! command -v dpkg-query >/dev/null || ! command -v apt-get >/dev/null; then
         die 2 "this script needs a Debian 12 system (apt-get and dpkg-query not found)"
+    fi
 
     local missing=() pkg status
     for pkg in "${PACKAGES[@]}"; do

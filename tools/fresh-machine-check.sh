@@ -8,8 +8,7 @@
 #    `debootstrap --variant=minbase bookworm` root from the Debian mirror this machine's apt uses.
 # 2. For each check, extracts a fresh copy of that root, copies a fresh `git clone` of this
 #    repository (the committed HEAD; uncommitted changes are left out) into /root/colonosim,
-#    bind-mounts proc, sys and dev,
-#    and runs the command in a chroot as root with no stdin:
+#    bind-mounts proc, sys and dev, and runs the command in a chroot as root with no stdin:
 #       ./setup.sh test     -> WORKDIR/setup-test.log
 #       ./setup.sh run      -> WORKDIR/setup-run.log
 # 3. Unmounts everything on exit and prints a summary with the minutes each step took.
@@ -192,8 +191,8 @@ check()
 {
     local name="$1"
     shift
-    local root="$WORKDIR/root-${name#setup-}"
-    [[ "$name" != ci-run ]] || root="$WORKDIR/root-ci" log="$WORKDIR/$name.log" t0 rc
+    local root="$WORKDIR/root-${name#setup-}" log="$WORKDIR/$name.log" t0 rc
+    [[ "$name" != ci-run ]] || root="$WORKDIR/root-ci"
     remove_root "$root"
     mkdir -p "$root"
     zstd -q -d -c "$BASE_TAR" | tar -C "$root" --numeric-owner -xf -
