@@ -1,0 +1,166 @@
+#!/usr/bin/env bash
+# setup.sh: set up a Debian 12 machine for colonosim, build it, then run the main job or the tests.
+#
+# Every step is idempotent: packages already installed are not touched, the build directory is
+# configured once and then built incrementally.
+set -euo pipefail
+
+cd "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")"
+
+# System dependencies, all from Debian 12 (bookworm) packages.
+# libqt6opengl6-dev and xauth are only Recommends of other packages, so they are named here.
+PACKAGES=(
+    build-essential cmake ninja-build pkg-config git
+    libeigen3-dev libbullet-dev libsqlite3-dev
+    qt6-base-dev libqt6opengl6-dev libqt6sql6-sqlite qt6-charts-dev qt6-svg-dev
+    libtinyxml2-dev libosmesa6-dev libassimp-dev nlohmann-json3-dev
+    libgtest-dev libgmock-dev libbenchmark-dev
+    libsodium-dev libzstd-dev
+    xvfb xauth poppler-utils
+)
+
+BUILD_DIR=build
+SANITIZE_BUILD_DIR=build-sanitize
+JOBS="${COLONOSIM_JOBS:-$(nproc)}"
+
+log()
+{
+    echo "setup: $*"
+}
+
+die()
+{
+    local code="$1"
+    shift
+    echo "setup: error: $*" >&2
+    exit "$code"
+}
+
+usage()
+{
+    cat <<'EOF'
+Usage: ./setup.sh COMMAND [ARGS...]
+
+Set up this Debian 12 machine for colonosim (system packages via apt-get), build it, and:
+
+  run [ARGS...]    build, then run the main job: build/trainer_ui/colonosim ARGS...
+  test             build, then run every test (ctest in build/)
+  test-sanitize    build with AddressSanitizer and UndefinedBehaviorSanitizer in build-sanitize/
+                   (RelWithDebInfo, benchmarks off), then run every test there
+  build            install what is missing and build, nothing else
+  -h, --help       show this help
+
+Packages are installed only when missing (checked with dpkg-query). The build directory is
+configured once (Release, Ninja) and then built incrementally with $(nproc) jobs;
+set COLONOSIM_JOBS to change that.
+EOF
+}
+
+# Install the packages of PACKAGES that dpkg does not report as installed.
+ensure_packages()
+{
+    if ! command -v dpkg-query >/dev/null || ! command -v apt-get >/dev/null; then
+        die 2 "this script needs a Debian 12 system (apt-get and dpkg-query not found)"
+    fi
+
+    local missing=() pkg status
+    for pkg in "${PACKAGES[@]}"; do
+        status="$(dpkg-query -W -f='${db:Status-Status}' "$pkg" 2>/dev/null || true)"
+        [[ "$status" == installed ]] || missing+=("$pkg")
+    done
+    if ((${#missing[@]} == 0)); then
+        log "all ${#PACKAGES[@]} system packages present"
+        return
+    fi
+
+    local -a as_root
+    if ((EUID == 0)); then
+        as_root=(env DEBIAN_FRONTEND=noninteractive)
+    elif command -v sudo >/dev/null; then
+        as_root=(sudo env DEBIAN_FRONTEND=noninteractive)
+    else
+        echo "setup: ${#missing[@]} packages are missing and this is neither root nor has sudo." >&2
+        echo "setup: as root, run:" >&2
+        echo "  apt-get update && apt-get install -y --no-install-recommends ${missing[*]}" >&2
+        exit 2
+    fi
+
+    log "installing ${#missing[@]} missing packages: ${missing[*]}"
+    "${as_root[@]}" apt-get update -q
+    "${as_root[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
+}
+
+# configure_and_build DIR [CMAKE ARGS...]: configure DIR once, then build it incrementally.
+configure_and_build()
+{
+    local dir="$1"
+    shift
+    if [[ ! -f "$dir/CMakeCache.txt" || ! -f "$dir/build.ninja" ]]; then
+        log "configuring $dir"
+        cmake -S . -B "$dir" -G Ninja "$@"
+    fi
+
+    local out
+    out="$(mktemp)"
+    # Keep ninja's output visible and look for its "no work to do" line afterwards.
+    if ! cmake --build "$dir" --parallel "$JOBS" 2>&1 | tee "$out"; then
+        rm -f "$out"
+        die 1 "build failed in $dir"
+    fi
+    if grep -q '^ninja: no work to do' "$out"; then
+        log "build up to date ($dir)"
+    else
+        log "build done ($dir)"
+    fi
+    rm -f "$out"
+}
+
+build_release()
+{
+    configure_and_build "$BUILD_DIR" -DCMAKE_BUILD_TYPE=Release
+}
+
+cmd="${1:-}"
+case "$cmd" in
+    -h | --help | help)
+        usage
+        exit 0
+        ;;
+    "")
+        usage >&2
+        exit 2
+        ;;
+    run | test | test-sanitize | build) shift ;;
+    *)
+        echo "setup: unknown command '$cmd' (expected run, test, test-sanitize or build; see --help)" >&2
+        exit 2
+        ;;
+esac
+
+ensure_packages
+
+case "$cmd" in
+    build)
+        build_release
+        ;;
+    run)
+        build_release
+        exe="$BUILD_DIR/trainer_ui/colonosim"
+        [[ -x "$exe" ]] || die 1 "$exe was not built"
+        log "running $exe $*"
+        exec "$exe" "$@"
+        ;;
+    test)
+        build_release
+        log "running the tests in $BUILD_DIR"
+        ctest --test-dir "$BUILD_DIR" --output-on-failure --parallel "$JOBS"
+        ;;
+    test-sanitize)
+        configure_and_build "$SANITIZE_BUILD_DIR" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+            -DCOLONOSIM_SANITIZE=ON -DCOLONOSIM_BUILD_BENCH=OFF
+        log "running the tests in $SANITIZE_BUILD_DIR (ASan + UBSan)"
+        export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_stack_use_after_return=1:strict_init_order=1}"
+        export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
+        ctest --test-dir "$SANITIZE_BUILD_DIR" --output-on-failure --parallel "$JOBS"
+        ;;
+esac
