@@ -16,7 +16,11 @@ std::string formatValue(double value)
 
 std::string unitSuffix(std::string_view unit)
 {
-    return unit == "1" ? std::string() : " " + std::string(unit);
+    std::string suffix;
+    if (unit != "1") {
+        suffix.append(" ").append(unit);
+    }
+    return suffix;
 }
 }  // namespace
 
