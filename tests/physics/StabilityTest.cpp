@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iostream>
 #include <random>
 
 namespace colonosim::physics {
@@ -112,6 +113,8 @@ TEST(StabilityBound, GershgorinBoundsTheExactHighestFrequency)
     SmallTube t = makeSmallTube(0.0);
     const StabilityEstimate estimate = estimateStability(t.body);
     const double exact = exactOmegaMax(t.body);
+    std::cout << "omega_max: Gershgorin " << estimate.omegaMax << " rad/s, exact " << exact << " rad/s (ratio "
+              << estimate.omegaMax / exact << ")\n";
     EXPECT_GE(estimate.omegaMax, exact);
     EXPECT_LT(estimate.omegaMax, 3.0 * exact) << "bound uselessly loose";
     EXPECT_NEAR(powerIterationOmegaMax(t.body, 3000), exact, 0.02 * exact);
