@@ -12,6 +12,7 @@ OrganConstraint::OrganConstraint(std::vector<ImplicitShape> shapes) : m_shapes(s
             b.centre = shape.centre;
             b.outerRadius = shape.semiAxes.maxCoeff();
             b.innerRadius = shape.semiAxes.minCoeff();
+            b.inverseSemiAxes = shape.semiAxes.cwiseInverse();
         } else {
             b.centre = 0.5 * (shape.capsuleA + shape.capsuleB);
             const double half = 0.5 * (shape.capsuleB - shape.capsuleA).norm();
@@ -35,6 +36,13 @@ int OrganConstraint::project(std::span<const int> nodes, Positions& x, Velocitie
             const double r2 = (x.col(i) - b.centre).squaredNorm();
             if (keepOutside ? r2 >= outer2 : r2 <= inner2) {
                 continue;  // certainly allowed
+            }
+            if (shape.kind == ImplicitShape::Kind::Ellipsoid) {
+                // Side of the surface: the sign of the signed distance is that of k0 - 1.
+                const double k02 = (x.col(i) - b.centre).cwiseProduct(b.inverseSemiAxes).squaredNorm();
+                if (keepOutside ? k02 >= 1.0 : k02 <= 1.0) {
+                    continue;
+                }
             }
             Eigen::Vector3d push;
             const double depth = shape.penetration(x.col(i), &push);

@@ -4,7 +4,9 @@
 /// shapes (geometry::ImplicitShape). After each step a node found inside an
 /// organ (or outside the abdominal cavity) is projected back to the surface
 /// and loses the velocity component that points into the shape (inelastic,
-/// frictionless contact). A bounding-sphere test skips far shapes cheaply.
+/// frictionless contact). A bounding-sphere test skips far shapes cheaply;
+/// for an ellipsoid the exact side test |(p - c) / a| vs 1 (the sign of its
+/// signed distance) skips the allowed nodes before the distance is computed.
 
 #include "simcore/geometry/ImplicitShape.h"
 #include "simcore/physics/Constraint.h"
@@ -26,6 +28,7 @@ private:
         Eigen::Vector3d centre;
         double outerRadius;  ///< sphere containing the shape, m
         double innerRadius;  ///< sphere contained in the shape, m
+        Eigen::Vector3d inverseSemiAxes = Eigen::Vector3d::Zero();  ///< ellipsoids, 1/m
     };
     std::vector<geometry::ImplicitShape> m_shapes;
     std::vector<Bounds> m_bounds;
