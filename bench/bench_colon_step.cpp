@@ -7,6 +7,7 @@
 
 #include "bench/report/BenchScene.h"
 #include "bench/report/StepRate.h"
+#include "simcore/physics/TissueSimulation.h"
 
 #include <benchmark/benchmark.h>
 
@@ -54,6 +55,41 @@ BENCHMARK(BM_ColonStep)
     ->Arg(static_cast<int>(IntegratorKind::ExplicitEuler))
     ->Arg(static_cast<int>(IntegratorKind::SymplecticEuler))
     ->Arg(static_cast<int>(IntegratorKind::RungeKutta4))
+    ->Arg(static_cast<int>(IntegratorKind::BackwardEuler))
+    ->Unit(benchmark::kMicrosecond);
+
+/// The organ projection, applied once per 1 ms loop step (not per substep).
+void BM_OrganProjection(benchmark::State& state)
+{
+    const colonosim::bench::BenchScene& s = scene();
+    colonosim::physics::ColonBody colon = s.makeBody();
+    for (auto _ : state) {
+        benchmark::DoNotOptimize(colon.body.projectConstraints(colon.body.positions(), colon.body.velocities()));
+    }
+    state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_OrganProjection)->Unit(benchmark::kMicrosecond);
+
+/// One whole 1 ms loop step as the procedure runs it: the substeps the
+/// stability bound asks for, then the organ projection and the state check.
+/// Real time needs <= 1000 us.
+void BM_LoopStep(benchmark::State& state)
+{
+    const colonosim::bench::BenchScene& s = scene();
+    colonosim::physics::ColonBody colon = s.makeBody();
+    colonosim::physics::SteppingPolicy policy;
+    policy.integrator = static_cast<IntegratorKind>(state.range(0));
+    colonosim::physics::TissueSimulation simulation(colon.body, policy);
+    s.load.apply(colon.body, s.load.rampTime);
+    for (auto _ : state) {
+        benchmark::DoNotOptimize(simulation.advance());
+    }
+    state.SetItemsProcessed(state.iterations());
+    state.SetLabel(simulation.planNote());
+    state.counters["substeps"] = simulation.substeps();
+}
+BENCHMARK(BM_LoopStep)
+    ->Arg(static_cast<int>(IntegratorKind::SymplecticEuler))
     ->Arg(static_cast<int>(IntegratorKind::BackwardEuler))
     ->Unit(benchmark::kMicrosecond);
 

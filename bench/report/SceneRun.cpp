@@ -35,6 +35,7 @@ RunResult runScene(const BenchScene& scene, physics::IntegratorKind kind, double
     const long numSteps = std::max(1L, static_cast<long>(std::ceil(duration / requestedStep - 1e-9)));
     const double h = duration / static_cast<double>(numSteps);
     constexpr long kCheckEvery = 10;
+    constexpr double kLoopStep = 1e-3;  // s
 
     RunResult result;
     result.step = h;
@@ -42,6 +43,11 @@ RunResult runScene(const BenchScene& scene, physics::IntegratorKind kind, double
     for (long s = 0; s < numSteps; ++s) {
         scene.load.apply(body, (static_cast<double>(s) + 0.5) * h);
         integrator->step(body, h);
+        // Organs are projected once per 1 ms loop step, as in TissueSimulation.
+        if (std::floor(static_cast<double>(s + 1) * h / kLoopStep + 1e-9) >
+            std::floor(static_cast<double>(s) * h / kLoopStep + 1e-9)) {
+            body.projectConstraints(body.positions(), body.velocities());
+        }
         ++result.steps;
         if ((s + 1) % kCheckEvery == 0 || s + 1 == numSteps) {
             if (!stateIsSane(body)) {

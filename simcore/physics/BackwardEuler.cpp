@@ -108,7 +108,6 @@ void BackwardEuler::step(TissueBody& body, double h)
         v.col(i) += m_dv.col(i);
         x.col(i) += h * v.col(i);
     }
-    body.projectConstraints(x, v);
 }
 
 }  // namespace colonosim::physics

@@ -25,7 +25,6 @@ void ExplicitEuler::step(TissueBody& body, double h)
         x.col(i) += h * v.col(i);
         v.col(i) += (h * invM[i]) * m_f.col(i);
     }
-    body.projectConstraints(x, v);
 }
 
 void SymplecticEuler::step(TissueBody& body, double h)
@@ -39,7 +38,6 @@ void SymplecticEuler::step(TissueBody& body, double h)
         v.col(i) += (h * invM[i]) * m_f.col(i);
         x.col(i) += h * v.col(i);
     }
-    body.projectConstraints(x, v);
 }
 
 void RungeKutta4::step(TissueBody& body, double h)
@@ -80,7 +78,6 @@ void RungeKutta4::step(TissueBody& body, double h)
         x.col(i) = m_x0.col(i) + h * m_dx.col(i);
         v.col(i) = m_v0.col(i) + h * m_dv.col(i);
     }
-    body.projectConstraints(x, v);
 }
 
 }  // namespace colonosim::physics

@@ -2,7 +2,8 @@
 /// \file
 /// Time integrators for M dv/dt = f(x, v), dx/dt = v, as pluggable strategies
 /// over TissueBody's force interface. Each advances the integrated (free,
-/// awake) nodes by one step h and then applies the body's constraints.
+/// awake) nodes by one step h. Positional constraints (organs) are applied by
+/// the caller once per loop step (TissueSimulation), not per substep.
 ///   explicit Euler:   x' = x + h v,  v' = v + h M^-1 f(x, v)     (the papers' choice)
 ///   symplectic Euler: v' = v + h M^-1 f(x, v),  x' = x + h v'
 ///   RK4:              classical fourth-order Runge-Kutta

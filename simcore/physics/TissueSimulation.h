@@ -7,7 +7,8 @@
 /// budget allows, so that no parameter set in the declared ranges runs
 /// unstable at the loop rate.
 ///
-/// After each loop step the state is checked (finite, node speed below the
+/// The body's positional constraints (organs) are applied once per loop step,
+/// after the substeps. After each loop step the state is checked (finite, node speed below the
 /// declared limit). A failing step is rejected: the last good state is kept,
 /// a diagnostic names the node, the value and the limit, and the step is
 /// retried once with twice the substeps, and the plan is re-derived from the
