@@ -1,10 +1,13 @@
 #pragma once
 /// \file
-/// Static equilibrium f(x) = 0 of a tissue body by Newton's method: each
-/// iteration solves (-K+) dx = f(x) by Jacobi-preconditioned conjugate
+/// Static equilibrium f(x) = 0 of a tissue body by a quasi-Newton method:
+/// each iteration solves (-K+) dx = f(x) by Jacobi-preconditioned conjugate
 /// gradients over the integrated nodes, then x += dx (step halved while the
-/// residual grows). Damping plays no part (v = 0). Used by the calibration
-/// and as a reference state.
+/// residual grows). K+ is the definite stiffness of the symmetric terms, so
+/// where springs are compressed, tethers slack or insufflation loads the wall
+/// (its Jacobian is left out) convergence is linear rather than quadratic:
+/// about 80 iterations to 1e-9 N on a 480-node tube. Damping plays no part
+/// (v = 0). Used by the calibration and as a reference state.
 
 #include "simcore/physics/TissueBody.h"
 
@@ -17,6 +20,6 @@ struct StaticResult {
 };
 
 /// Stops when every integrated node's net force is below `forceTolerance` (N).
-StaticResult solveStaticEquilibrium(TissueBody& body, double forceTolerance, int maxIterations = 50);
+StaticResult solveStaticEquilibrium(TissueBody& body, double forceTolerance, int maxIterations = 300);
 
 }  // namespace colonosim::physics
