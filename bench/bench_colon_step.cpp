@@ -27,7 +27,8 @@ void BM_ColonStep(benchmark::State& state)
     const colonosim::bench::BenchScene& s = scene();
     colonosim::physics::ColonBody colon = s.makeBody();
     const double h = colonosim::bench::benchStableStep(s, kind);
-    const std::unique_ptr<colonosim::physics::Integrator> integrator = colonosim::physics::makeIntegrator(kind);
+    const std::unique_ptr<colonosim::physics::Integrator> integrator =
+        colonosim::physics::makeIntegrator(kind);
     s.load.apply(colon.body, s.load.rampTime);
     const colonosim::physics::Positions x0 = colon.body.positions();
     // Explicit Euler sits on its bound and drifts unstable over long runs:
@@ -64,7 +65,8 @@ void BM_OrganProjection(benchmark::State& state)
     const colonosim::bench::BenchScene& s = scene();
     colonosim::physics::ColonBody colon = s.makeBody();
     for (auto _ : state) {
-        benchmark::DoNotOptimize(colon.body.projectConstraints(colon.body.positions(), colon.body.velocities()));
+        benchmark::DoNotOptimize(
+            colon.body.projectConstraints(colon.body.positions(), colon.body.velocities()));
     }
     state.SetItemsProcessed(state.iterations());
 }

@@ -26,7 +26,7 @@ void BM_MeshMappingApply(benchmark::State& state)
     for (Eigen::Index i = 0; i < deformed.cols(); ++i) {
         const Eigen::Vector3d p = deformed.col(i);
         deformed.col(i) = Eigen::AngleAxisd(0.5 * p.z(), Eigen::Vector3d::UnitX()) * p +
-            0.003 * Eigen::Vector3d(std::sin(40.0 * p.z()), std::cos(30.0 * p.x()), 0.0);
+                          0.003 * Eigen::Vector3d(std::sin(40.0 * p.z()), std::cos(30.0 * p.x()), 0.0);
     }
     Eigen::Matrix3Xd visual(3, mapping.numVisualVertices());
     for (auto _ : state) {

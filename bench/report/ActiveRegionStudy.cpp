@@ -65,9 +65,10 @@ ActiveRegionResult runActiveRegionStudy(const BenchScene& scene, double duration
     result.maxError = error.max;
     result.awakeFraction = active.steps > 0 ? active.awakeSum / static_cast<double>(active.steps) : 1.0;
     result.finalAwakeFraction = active.finalAwake;
-    log << "active region: " << duration << " s simulated; full " << full.cpu << " s CPU, active " << active.cpu
-        << " s CPU (speed-up " << result.speedup << "); awake fraction mean " << result.awakeFraction << ", final "
-        << result.finalAwakeFraction << "; error rms " << error.rms << " m, max " << error.max << " m\n";
+    log << "active region: " << duration << " s simulated; full " << full.cpu << " s CPU, active "
+        << active.cpu << " s CPU (speed-up " << result.speedup << "); awake fraction mean "
+        << result.awakeFraction << ", final " << result.finalAwakeFraction << "; error rms " << error.rms
+        << " m, max " << error.max << " m\n";
     return result;
 }
 

@@ -21,11 +21,12 @@ struct ActiveRegionResult {
     double maxError = 0.0;       ///< m
     double awakeFraction = 0.0;  ///< mean over loop steps
     double finalAwakeFraction = 0.0;
-    double cpuFull = 0.0;        ///< s
-    double cpuActive = 0.0;      ///< s
-    double duration = 0.0;       ///< simulated, s
+    double cpuFull = 0.0;    ///< s
+    double cpuActive = 0.0;  ///< s
+    double duration = 0.0;   ///< simulated, s
 };
 
-[[nodiscard]] ActiveRegionResult runActiveRegionStudy(const BenchScene& scene, double duration, std::ostream& log);
+[[nodiscard]] ActiveRegionResult runActiveRegionStudy(const BenchScene& scene, double duration,
+                                                      std::ostream& log);
 
 }  // namespace colonosim::bench

@@ -39,7 +39,8 @@ struct PeerResult {
     PositionError error;
 };
 
-PeerResult runPeer(const BenchScene& scene, const Scale& scale, double duration, const ReferenceSolution& reference, std::ostream& log)
+PeerResult runPeer(const BenchScene& scene, const Scale& scale, double duration,
+                   const ReferenceSolution& reference, std::ostream& log)
 {
     PeerResult peer;
     peer.match = matchBulletStiffness(scene, scale.bisectionHalvings, log);
@@ -56,8 +57,8 @@ PeerResult runPeer(const BenchScene& scene, const Scale& scale, double duration,
     peer.stepHz = static_cast<double>(steps) / cpu;
     peer.cpuPerSimulatedSecond = cpu / (static_cast<double>(steps) * h);
     peer.error = positionError(colon.positions(), reference.positions);
-    log << "peer: bullet_btSoftBody at 1 ms: " << peer.stepHz << " steps/s; error vs reference rms " << peer.error.rms
-        << " m, max " << peer.error.max << " m\n";
+    log << "peer: bullet_btSoftBody at 1 ms: " << peer.stepHz << " steps/s; error vs reference rms "
+        << peer.error.rms << " m, max " << peer.error.max << " m\n";
     return peer;
 }
 
@@ -100,8 +101,10 @@ int runBenchReport(const BenchReportOptions& options, std::ostream& log)
 
     nlohmann::json summary = nlohmann::json::object();
     summary["quick"] = options.quick;
-    summary["machine"] = {{"cpu", cpuModel()}, {"hardware_threads", std::thread::hardware_concurrency()},
-                          {"threads_used", 1}, {"compiler", __VERSION__}};
+    summary["machine"] = {{"cpu", cpuModel()},
+                          {"hardware_threads", std::thread::hardware_concurrency()},
+                          {"threads_used", 1},
+                          {"compiler", __VERSION__}};
     summary["nodes"] = scene.anatomy.physicsMesh.numVertices();
     summary["visual_vertices"] = scene.anatomy.visualMesh.numVertices();
     summary["scene_duration_s"] = scale.sceneDuration;
@@ -151,7 +154,8 @@ int runBenchReport(const BenchReportOptions& options, std::ostream& log)
     writeSweepCsv(rows, csv);
     std::ofstream svg(options.outDir / "speed_vs_error.svg");
     writeSpeedVsErrorSvg(rows, PeerPoint{"bullet_btSoftBody", peer.cpuPerSimulatedSecond, peer.error.rms},
-                         "Colon, " + std::to_string(static_cast<int>(std::lround(scale.sceneDuration * 1e3))) +
+                         "Colon, " +
+                             std::to_string(static_cast<int>(std::lround(scale.sceneDuration * 1e3))) +
                              " ms loaded: error vs cost",
                          svg);
     summary["report_cpu_s"] = processCpuSeconds() - start;

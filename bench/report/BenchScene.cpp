@@ -82,7 +82,8 @@ StandardLoad placeStandardLoad(const geometry::ColonAnatomy& anatomy, const phys
     StandardLoad load;
     load.point = body.positions().col(centre);
     const geometry::PhysicsNodeInfo& info = anatomy.physicsNodes[static_cast<size_t>(centre)];
-    const Eigen::Vector3d axisPoint = anatomy.centreline.points[nearestSample(anatomy.centreline, info.arcLength)];
+    const Eigen::Vector3d axisPoint =
+        anatomy.centreline.points[nearestSample(anatomy.centreline, info.arcLength)];
     load.direction = (load.point - axisPoint).normalized();
     for (int i = 0; i < body.numNodes(); ++i) {
         if (!body.isFixed(i) && (body.positions().col(i) - load.point).norm() <= load.radius) {
@@ -106,7 +107,8 @@ BenchScene buildBenchScene()
     scene.environment.patientPosition = physics::PatientPosition::LeftLateral;
     scene.environment.insufflationPressure = 2000.0;  // 15 mmHg
     const int perRing = static_cast<int>(geometry::AnatomyParameters{}.physicsNodesPerRing);
-    scene.calibration = physics::calibrateWallStiffness(matchingTube(scene.anatomy, perRing), scene.tissue).factors;
+    scene.calibration =
+        physics::calibrateWallStiffness(matchingTube(scene.anatomy, perRing), scene.tissue).factors;
     const physics::ColonBody body = scene.makeBody();
     scene.load = placeStandardLoad(scene.anatomy, body.body);
     return scene;

@@ -21,12 +21,12 @@
 namespace colonosim::bench {
 
 struct StandardLoad {
-    double totalForce = 2.0;   ///< N
-    double rampTime = 0.05;    ///< s
-    double radius = 0.02;      ///< m
-    Eigen::Vector3d point = Eigen::Vector3d::Zero();      ///< load point on the sigmoid wall, m
-    Eigen::Vector3d direction = Eigen::Vector3d::UnitX(); ///< unit, out of the lumen
-    std::vector<int> nodes;    ///< loaded free nodes
+    double totalForce = 2.0;                               ///< N
+    double rampTime = 0.05;                                ///< s
+    double radius = 0.02;                                  ///< m
+    Eigen::Vector3d point = Eigen::Vector3d::Zero();       ///< load point on the sigmoid wall, m
+    Eigen::Vector3d direction = Eigen::Vector3d::UnitX();  ///< unit, out of the lumen
+    std::vector<int> nodes;                                ///< loaded free nodes
 
     /// Force on each loaded node at time t (s), N.
     [[nodiscard]] Eigen::Vector3d nodeForce(double t) const;

@@ -36,7 +36,8 @@ BulletColon::BulletColon(const BenchScene& scene, const BulletSettings& settings
         x[static_cast<size_t>(i)] = btVector3(btScalar(p.x()), btScalar(p.y()), btScalar(p.z()));
         m[static_cast<size_t>(i)] = body.isFixed(i) ? btScalar(0) : btScalar(body.masses()[i]);
     }
-    const Eigen::Vector3d g = scene.environment.gravity * physics::downDirection(scene.environment.patientPosition);
+    const Eigen::Vector3d g =
+        scene.environment.gravity * physics::downDirection(scene.environment.patientPosition);
     const btVector3 gravity(btScalar(g.x()), btScalar(g.y()), btScalar(g.z()));
     btSoftBodyWorldInfo& info = m_world->world.getWorldInfo();
     info.m_gravity = gravity;
@@ -104,7 +105,8 @@ void BulletColon::step(double t, double h, bool withLoad)
 }
 
 namespace {
-double meanAlong(const StandardLoad& load, const physics::Positions& loaded, const physics::Positions& unloaded)
+double meanAlong(const StandardLoad& load, const physics::Positions& loaded,
+                 const physics::Positions& unloaded)
 {
     double sum = 0.0;
     for (const int node : load.nodes) {
@@ -155,12 +157,13 @@ BulletMatch matchBulletStiffness(const BenchScene& scene, int halvings, std::ost
     log << "peer: our static deflection under the standard load " << match.targetDeflection * 1e3 << " mm\n";
     BulletSettings settings;
     // Raise the iterations until kLST = 1 is at least as stiff as our model.
-    for (settings.positionIterations = 1; settings.positionIterations <= 64; settings.positionIterations *= 2) {
+    for (settings.positionIterations = 1; settings.positionIterations <= 64;
+         settings.positionIterations *= 2) {
         settings.linearStiffness = 1.0;
         const double stiffest = bulletStaticDeflection(scene, settings);
         ++match.evaluations;
-        log << "peer: piterations " << settings.positionIterations << ", kLST 1: deflection " << stiffest * 1e3
-            << " mm\n";
+        log << "peer: piterations " << settings.positionIterations << ", kLST 1: deflection "
+            << stiffest * 1e3 << " mm\n";
         if (stiffest <= match.targetDeflection) {
             break;
         }
@@ -181,7 +184,8 @@ BulletMatch matchBulletStiffness(const BenchScene& scene, int halvings, std::ost
     std::ostringstream note;
     note << "bisection on m_kLST (" << halvings << " halvings, piterations " << settings.positionIterations
          << ", raised from 1 while kLST = 1 was too soft) so that the static deflection of the loaded nodes "
-            "under the standard 2 N load (mean along the load, loaded minus unloaded, gravity and insufflation "
+            "under the standard 2 N load (mean along the load, loaded minus unloaded, gravity and "
+            "insufflation "
             "in both, no organs) equals our model's static solution: ours "
          << match.targetDeflection * 1e3 << " mm, Bullet " << match.peerDeflection * 1e3 << " mm at kLST "
          << settings.linearStiffness << "; kDP 0 in the dynamic run (0.2 while settling)";

@@ -69,7 +69,7 @@ struct BulletMatch {
     double targetDeflection = 0.0;  ///< ours, m
     double peerDeflection = 0.0;    ///< Bullet's at the matched kLST, m
     int evaluations = 0;
-    std::string note;               ///< how it was matched, for summary.json
+    std::string note;  ///< how it was matched, for summary.json
 };
 
 /// `halvings` bisection steps on kLST.

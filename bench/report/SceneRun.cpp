@@ -26,7 +26,8 @@ bool stateIsSane(const physics::TissueBody& body)
 }
 }  // namespace
 
-RunResult runScene(const BenchScene& scene, physics::IntegratorKind kind, double requestedStep, double duration)
+RunResult runScene(const BenchScene& scene, physics::IntegratorKind kind, double requestedStep,
+                   double duration)
 {
     physics::ColonBody colon = scene.makeBody();
     physics::TissueBody& body = colon.body;

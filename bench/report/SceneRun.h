@@ -18,10 +18,10 @@ inline constexpr double kUnstableSpeed = 20.0;
 
 struct RunResult {
     bool stable = true;
-    double step = 0.0;                ///< s, the step used
-    long steps = 0;                   ///< steps taken
-    double simulatedTime = 0.0;       ///< s
-    double cpuSeconds = 0.0;          ///< CPU time of the stepping loop, s
+    double step = 0.0;                  ///< s, the step used
+    long steps = 0;                     ///< steps taken
+    double simulatedTime = 0.0;         ///< s
+    double cpuSeconds = 0.0;            ///< CPU time of the stepping loop, s
     physics::Positions finalPositions;  ///< at the end (stable runs only)
 
     [[nodiscard]] double cpuPerSimulatedSecond() const

@@ -26,7 +26,8 @@ ReferenceSolution computeReference(const BenchScene& scene, double duration, std
     const PositionError self = positionError(reference.halfResolution.finalPositions, fine.finalPositions);
     reference.selfError = self.rms;
     reference.selfErrorMax = self.max;
-    log << "reference: rk4 at " << reference.step * 1e6 << " us, " << fine.cpuSeconds << " s CPU; self-consistency "
+    log << "reference: rk4 at " << reference.step * 1e6 << " us, " << fine.cpuSeconds
+        << " s CPU; self-consistency "
         << "(rk4 h_s/8 vs h_s/16): rms " << self.rms << " m, max " << self.max << " m\n";
     return reference;
 }
@@ -51,8 +52,12 @@ std::vector<SweepRow> runSpeedErrorSweep(const BenchScene& scene, double duratio
         for (const double h : stepsFor(scene, kind)) {
             const bool reuse = kind == IntegratorKind::RungeKutta4 && h == rk4Eighth;
             const RunResult run = reuse ? reference.halfResolution : runScene(scene, kind, h, duration);
-            SweepRow row{std::string(physics::integratorName(kind)), run.step, run.stable, run.cpuPerSimulatedSecond(),
-                         NAN, NAN};
+            SweepRow row{std::string(physics::integratorName(kind)),
+                         run.step,
+                         run.stable,
+                         run.cpuPerSimulatedSecond(),
+                         NAN,
+                         NAN};
             if (run.stable) {
                 const PositionError error = positionError(run.finalPositions, reference.positions);
                 row.rmsError = error.rms;
@@ -60,7 +65,8 @@ std::vector<SweepRow> runSpeedErrorSweep(const BenchScene& scene, double duratio
             }
             log << std::setw(17) << row.integrator << "  h " << std::setw(10) << run.step * 1e6 << " us  "
                 << (row.stable ? "stable  " : "UNSTABLE") << "  cpu/sim " << std::setw(9)
-                << row.cpuPerSimulatedSecond << "  rms " << row.rmsError << " m  max " << row.maxError << " m\n";
+                << row.cpuPerSimulatedSecond << "  rms " << row.rmsError << " m  max " << row.maxError
+                << " m\n";
             rows.push_back(row);
         }
     }
@@ -72,8 +78,8 @@ void writeSweepCsv(const std::vector<SweepRow>& rows, std::ostream& out)
     out << "integrator,step_s,stable,cpu_s_per_simulated_s,rms_error_m,max_error_m\n";
     out << std::setprecision(9);
     for (const SweepRow& row : rows) {
-        out << row.integrator << ',' << row.step << ',' << (row.stable ? 1 : 0) << ',' << row.cpuPerSimulatedSecond
-            << ',';
+        out << row.integrator << ',' << row.step << ',' << (row.stable ? 1 : 0) << ','
+            << row.cpuPerSimulatedSecond << ',';
         if (row.stable) {
             out << row.rmsError << ',' << row.maxError << '\n';
         } else {

@@ -68,22 +68,26 @@ void writeSpeedVsErrorSvg(const std::vector<SweepRow>& rows, const PeerPoint& pe
     yr.snap();
     const double plotW = kWidth - kLeft - kRight;
     const double plotH = kHeight - kTop - kBottom;
-    const auto px = [&](double x) { return kLeft + plotW * std::log10(x / xr.lo) / std::log10(xr.hi / xr.lo); };
-    const auto py = [&](double y) { return kTop + plotH * (1.0 - std::log10(y / yr.lo) / std::log10(yr.hi / yr.lo)); };
+    const auto px = [&](double x) {
+        return kLeft + plotW * std::log10(x / xr.lo) / std::log10(xr.hi / xr.lo);
+    };
+    const auto py = [&](double y) {
+        return kTop + plotH * (1.0 - std::log10(y / yr.lo) / std::log10(yr.hi / yr.lo));
+    };
 
     out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << kWidth << "\" height=\"" << kHeight
         << "\" font-family=\"sans-serif\" font-size=\"13\">\n";
     out << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-    out << "<text x=\"" << kLeft + plotW / 2 << "\" y=\"28\" text-anchor=\"middle\" font-size=\"16\">" << title
-        << "</text>\n";
+    out << "<text x=\"" << kLeft + plotW / 2 << "\" y=\"28\" text-anchor=\"middle\" font-size=\"16\">"
+        << title << "</text>\n";
     out << "<rect x=\"" << kLeft << "\" y=\"" << kTop << "\" width=\"" << plotW << "\" height=\"" << plotH
         << "\" fill=\"none\" stroke=\"black\"/>\n";
     for (int e = static_cast<int>(std::lround(std::log10(xr.lo))); e <= std::lround(std::log10(xr.hi)); ++e) {
         const double x = px(std::pow(10.0, e));
         out << "<line x1=\"" << x << "\" y1=\"" << kTop << "\" x2=\"" << x << "\" y2=\"" << kTop + plotH
             << "\" stroke=\"#ddd\"/>\n";
-        out << "<text x=\"" << x << "\" y=\"" << kTop + plotH + 18 << "\" text-anchor=\"middle\">" << decadeLabel(e)
-            << "</text>\n";
+        out << "<text x=\"" << x << "\" y=\"" << kTop + plotH + 18 << "\" text-anchor=\"middle\">"
+            << decadeLabel(e) << "</text>\n";
     }
     for (int e = static_cast<int>(std::lround(std::log10(yr.lo))); e <= std::lround(std::log10(yr.hi)); ++e) {
         const double y = py(std::pow(10.0, e));
@@ -110,40 +114,43 @@ void writeSpeedVsErrorSvg(const std::vector<SweepRow>& rows, const PeerPoint& pe
     for (size_t s = 0; s < order.size(); ++s) {
         const char* colour = kColours[s % 4];
         std::vector<const SweepRow*> points = series[order[s]];
-        std::sort(points.begin(), points.end(), [](const SweepRow* a, const SweepRow* b) { return a->step > b->step; });
+        std::sort(points.begin(), points.end(),
+                  [](const SweepRow* a, const SweepRow* b) { return a->step > b->step; });
         std::ostringstream line;
         for (const SweepRow* row : points) {
             if (row->stable && row->rmsError > 0.0) {
                 line << px(row->cpuPerSimulatedSecond) << ',' << py(row->rmsError) << ' ';
             }
         }
-        out << "<polyline fill=\"none\" stroke=\"" << colour << "\" stroke-width=\"2\" points=\"" << line.str()
-            << "\"/>\n";
+        out << "<polyline fill=\"none\" stroke=\"" << colour << "\" stroke-width=\"2\" points=\""
+            << line.str() << "\"/>\n";
         for (const SweepRow* row : points) {
             if (row->stable && row->rmsError > 0.0) {
                 out << "<circle cx=\"" << px(row->cpuPerSimulatedSecond) << "\" cy=\"" << py(row->rmsError)
                     << "\" r=\"4\" fill=\"" << colour << "\"/>\n";
             } else if (!row->stable && row->cpuPerSimulatedSecond > 0.0) {
                 const double x = px(row->cpuPerSimulatedSecond);
-                out << "<path d=\"M" << x - 6 << ',' << kTop - 6 << " l12,12 m0,-12 l-12,12\" stroke=\"" << colour
-                    << "\" stroke-width=\"2.5\"/>\n";
+                out << "<path d=\"M" << x - 6 << ',' << kTop - 6 << " l12,12 m0,-12 l-12,12\" stroke=\""
+                    << colour << "\" stroke-width=\"2.5\"/>\n";
             }
         }
         out << "<line x1=\"" << legendX << "\" y1=\"" << legendY << "\" x2=\"" << legendX + 24 << "\" y2=\""
             << legendY << "\" stroke=\"" << colour << "\" stroke-width=\"2\"/>\n";
-        out << "<circle cx=\"" << legendX + 12 << "\" cy=\"" << legendY << "\" r=\"4\" fill=\"" << colour << "\"/>\n";
+        out << "<circle cx=\"" << legendX + 12 << "\" cy=\"" << legendY << "\" r=\"4\" fill=\"" << colour
+            << "\"/>\n";
         out << "<text x=\"" << legendX + 32 << "\" y=\"" << legendY + 4 << "\">" << order[s] << "</text>\n";
         legendY += 22;
     }
     if (peer.cpuPerSimulatedSecond > 0.0 && peer.rmsError > 0.0) {
         const double x = px(peer.cpuPerSimulatedSecond);
         const double y = py(peer.rmsError);
-        out << "<rect x=\"" << x - 6 << "\" y=\"" << y - 6 << "\" width=\"12\" height=\"12\" fill=\"" << kColours[4]
-            << "\" stroke=\"black\"/>\n";
+        out << "<rect x=\"" << x - 6 << "\" y=\"" << y - 6 << "\" width=\"12\" height=\"12\" fill=\""
+            << kColours[4] << "\" stroke=\"black\"/>\n";
     }
     out << "<rect x=\"" << legendX + 6 << "\" y=\"" << legendY - 6 << "\" width=\"12\" height=\"12\" fill=\""
         << kColours[4] << "\" stroke=\"black\"/>\n";
-    out << "<text x=\"" << legendX + 32 << "\" y=\"" << legendY + 4 << "\">" << peer.name << " (1 ms)</text>\n";
+    out << "<text x=\"" << legendX + 32 << "\" y=\"" << legendY + 4 << "\">" << peer.name
+        << " (1 ms)</text>\n";
     legendY += 22;
     out << "<path d=\"M" << legendX + 6 << ',' << legendY - 6 << " l12,12 m0,-12 l-12,12\" stroke=\"black\" "
         << "stroke-width=\"2.5\"/>\n";

@@ -17,7 +17,8 @@ namespace colonosim::bench {
 
 /// Steps per second of one integrator step on the loaded colon, timed over
 /// at least `minSeconds` of stepping after a warm-up of a few steps.
-[[nodiscard]] double measureColonStepHz(const BenchScene& scene, physics::IntegratorKind kind, double minSeconds);
+[[nodiscard]] double measureColonStepHz(const BenchScene& scene, physics::IntegratorKind kind,
+                                        double minSeconds);
 
 /// Median time of MeshMapping::apply (visual mesh onto the physics mesh,
 /// deformed by the bench scene after a few loaded steps) over `repeats`, s.

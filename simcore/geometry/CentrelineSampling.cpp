@@ -93,7 +93,8 @@ CentrelineSample sampleCentreline(const Centreline& c, double s)
     const int k = std::clamp(static_cast<int>(it - c.arcLength.begin()) - 1, 0, std::max(0, n - 2));
     const int k1 = std::min(k + 1, n - 1);
     const double span = c.arcLength[static_cast<std::size_t>(k1)] - c.arcLength[static_cast<std::size_t>(k)];
-    const double u = span > 0.0 ? std::clamp((s - c.arcLength[static_cast<std::size_t>(k)]) / span, 0.0, 1.0) : 0.0;
+    const double u =
+        span > 0.0 ? std::clamp((s - c.arcLength[static_cast<std::size_t>(k)]) / span, 0.0, 1.0) : 0.0;
     const auto lerp = [u](const auto& a, const auto& b) { return (1.0 - u) * a + u * b; };
     const auto sk = static_cast<std::size_t>(k);
     const auto sk1 = static_cast<std::size_t>(k1);

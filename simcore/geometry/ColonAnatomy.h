@@ -41,9 +41,9 @@ struct Landmark {
 
 struct ColonAnatomy {
     Centreline centreline;
-    TriangleMesh physicsMesh;                 ///< ~1,900 nodes by default
+    TriangleMesh physicsMesh;                   ///< ~1,900 nodes by default
     std::vector<PhysicsNodeInfo> physicsNodes;  ///< one per physics-mesh vertex
-    TriangleMesh visualMesh;                  ///< >= 50,000 vertices by default
+    TriangleMesh visualMesh;                    ///< >= 50,000 vertices by default
     std::vector<Landmark> landmarks;
     std::vector<ImplicitShape> organs;
 };

@@ -19,20 +19,29 @@ struct Bend {
 };
 
 /// The spans between consecutive anchors, and the segments each one holds.
-enum Span { kRectumSpan, kSigmoidSpan, kDescendingSpan, kTransverseSpan, kAscendingSpan, kCecumSpan, kNumSpans };
+enum Span {
+    kRectumSpan,
+    kSigmoidSpan,
+    kDescendingSpan,
+    kTransverseSpan,
+    kAscendingSpan,
+    kCecumSpan,
+    kNumSpans
+};
 constexpr int kNumAnchors = kNumSpans + 1;
-constexpr std::array<std::array<int, 2>, kNumSpans> kSpanSegments{{{0, 0}, {1, 1}, {2, 3}, {3, 5}, {5, 6}, {7, 7}}};
+constexpr std::array<std::array<int, 2>, kNumSpans> kSpanSegments{
+    {{0, 0}, {1, 1}, {2, 3}, {3, 5}, {5, 6}, {7, 7}}};
 
 const std::array<Eigen::Vector3d, kNumAnchors>& defaultAnchors()
 {
     static const std::array<Eigen::Vector3d, kNumAnchors> anchors{{
-        {0.0, 0.0, 0.0},        // anal verge
-        {0.01, 0.05, 0.12},     // rectosigmoid junction
-        {0.12, 0.05, 0.21},     // sigmoid-descending junction, left iliac fossa
-        {0.15, 0.05, 0.43},     // splenic flexure corner, under the left diaphragm
-        {-0.15, 0.05, 0.41},    // hepatic flexure corner, under the liver
-        {-0.11, 0.05, 0.25},    // ileocecal valve
-        {-0.10, 0.03, 0.175},   // cecal base (recomputed: continues the ascending colon)
+        {0.0, 0.0, 0.0},       // anal verge
+        {0.01, 0.05, 0.12},    // rectosigmoid junction
+        {0.12, 0.05, 0.21},    // sigmoid-descending junction, left iliac fossa
+        {0.15, 0.05, 0.43},    // splenic flexure corner, under the left diaphragm
+        {-0.15, 0.05, 0.41},   // hepatic flexure corner, under the liver
+        {-0.11, 0.05, 0.25},   // ileocecal valve
+        {-0.10, 0.03, 0.175},  // cecal base (recomputed: continues the ascending colon)
     }};
     return anchors;
 }
@@ -40,13 +49,16 @@ const std::array<Eigen::Vector3d, kNumAnchors>& defaultAnchors()
 const std::array<std::vector<Bend>, kNumSpans>& shapes()
 {
     static const std::array<std::vector<Bend>, kNumSpans> s{{
-        {{0.5, {0.0, 1.0, 0.0}}},                                                       // rectum: sacral curve
+        {{0.5, {0.0, 1.0, 0.0}}},  // rectum: sacral curve
         {{0.2, {-0.3, -0.7, 0.3}}, {0.5, {0.0, -1.0, 0.8}}, {0.75, {0.4, -0.8, -0.1}}},  // sigmoid loop
-        {{0.5, {1.0, 0.0, 0.0}}},                                                       // descending: lateral
-        {{0.15, {0.0, -0.75, -0.2}}, {0.33, {0.0, -0.65, -0.8}}, {0.5, {0.0, -0.6, -0.85}},  // transverse: U-shaped
-         {0.67, {0.0, -0.65, -0.8}}, {0.85, {0.0, -0.75, -0.2}}},                            // sag, wide bottom
-        {{0.65, {-1.0, 0.0, 0.0}}},                                                     // ascending: lateral
-        {},                                                                             // cecum: straight pouch
+        {{0.5, {1.0, 0.0, 0.0}}},  // descending: lateral
+        {{0.15, {0.0, -0.75, -0.2}},
+         {0.33, {0.0, -0.65, -0.8}},
+         {0.5, {0.0, -0.6, -0.85}},  // transverse: U-shaped
+         {0.67, {0.0, -0.65, -0.8}},
+         {0.85, {0.0, -0.75, -0.2}}},  // sag, wide bottom
+        {{0.65, {-1.0, 0.0, 0.0}}},    // ascending: lateral
+        {},                            // cecum: straight pouch
     }};
     return s;
 }
@@ -57,13 +69,16 @@ struct ControlPolygon {
     std::array<int, kNumAnchors> anchorIndex{};
 };
 
-ControlPolygon buildControlPolygon(const AnatomyParameters& params, const std::array<Eigen::Vector3d, kNumAnchors>& anchors,
+ControlPolygon buildControlPolygon(const AnatomyParameters& params,
+                                   const std::array<Eigen::Vector3d, kNumAnchors>& anchors,
                                    const std::array<double, kNumSpans>& amplitude)
 {
     const auto spanRadius = [&](int span) {
-        if (span < 0 || span >= kNumSpans) return 0.0;
+        if (span < 0 || span >= kNumSpans)
+            return 0.0;
         double r = 0.0;
-        for (int seg = kSpanSegments[static_cast<std::size_t>(span)][0]; seg <= kSpanSegments[static_cast<std::size_t>(span)][1]; ++seg) {
+        for (int seg = kSpanSegments[static_cast<std::size_t>(span)][0];
+             seg <= kSpanSegments[static_cast<std::size_t>(span)][1]; ++seg) {
             r = std::max(r, 0.5 * params.diameter(static_cast<Segment>(seg)));
         }
         return r;
@@ -74,9 +89,11 @@ ControlPolygon buildControlPolygon(const AnatomyParameters& params, const std::a
         poly.anchorIndex[i] = static_cast<int>(poly.points.size());
         poly.points.push_back(anchors[i]);
         poly.lumenRadius.push_back(std::max(spanRadius(span - 1), spanRadius(span)));
-        if (span == kNumSpans) break;
+        if (span == kNumSpans)
+            break;
         for (const Bend& bend : shapes()[i]) {
-            poly.points.push_back((1.0 - bend.t) * anchors[i] + bend.t * anchors[i + 1] + amplitude[i] * bend.direction);
+            poly.points.push_back((1.0 - bend.t) * anchors[i] + bend.t * anchors[i + 1] +
+                                  amplitude[i] * bend.direction);
             poly.lumenRadius.push_back(spanRadius(span));
         }
     }
@@ -148,8 +165,11 @@ ColonLayout layoutColon(const AnatomyParameters& params, double sampleSpacing)
     const auto length = [&](int seg) { return params.length(static_cast<Segment>(seg)); };
     // A flexure is the middle of the bend around its corner: half of it
     // belongs to each span that meets there.
-    const std::array<double, kNumSpans> target{length(0), length(1), length(2) + 0.5 * length(3),
-                                               0.5 * length(3) + length(4) + 0.5 * length(5), 0.5 * length(5) + length(6),
+    const std::array<double, kNumSpans> target{length(0),
+                                               length(1),
+                                               length(2) + 0.5 * length(3),
+                                               0.5 * length(3) + length(4) + 0.5 * length(5),
+                                               0.5 * length(5) + length(6),
                                                length(7)};
     std::array<double, kNumSpans> amplitude{};
     std::array<Eigen::Vector3d, kNumAnchors> anchors{};
@@ -170,7 +190,8 @@ ColonLayout layoutColon(const AnatomyParameters& params, double sampleSpacing)
             const auto valve = static_cast<std::size_t>(current.anchorIndex[kCecumSpan]);
             const Eigen::Vector3d down = (current.points[valve] - current.points[valve - 1]).normalized();
             anchors[kNumSpans] = anchors[kCecumSpan] + cecumChord * down;
-            cecumChord *= target[kCecumSpan] / spanArcLength(buildControlPolygon(params, anchors, amplitude), kCecumSpan);
+            cecumChord *= target[kCecumSpan] /
+                          spanArcLength(buildControlPolygon(params, anchors, amplitude), kCecumSpan);
             for (int span = 0; span < kCecumSpan; ++span) {
                 const auto s = static_cast<std::size_t>(span);
                 const auto lengthAt = [&](double a) {
@@ -196,7 +217,8 @@ ColonLayout layoutColon(const AnatomyParameters& params, double sampleSpacing)
         poly = buildControlPolygon(params, anchors, amplitude);
         double worstRatio = 1.0;
         for (int span = 0; span < kNumSpans; ++span) {
-            worstRatio = std::min(worstRatio, target[static_cast<std::size_t>(span)] / spanArcLength(poly, span));
+            worstRatio =
+                std::min(worstRatio, target[static_cast<std::size_t>(span)] / spanArcLength(poly, span));
         }
         if (worstRatio > 0.999) {
             break;
@@ -209,7 +231,9 @@ ColonLayout layoutColon(const AnatomyParameters& params, double sampleSpacing)
     // boundary is the curve point closest to it; a flexure is centred there.
     const FilletedPolyline curve = rounded(poly);
     const double total = curve.length();
-    const auto anchorAt = [&](int a) { return curve.vertexArcLength[static_cast<std::size_t>(poly.anchorIndex[static_cast<std::size_t>(a)])]; };
+    const auto anchorAt = [&](int a) {
+        return curve.vertexArcLength[static_cast<std::size_t>(poly.anchorIndex[static_cast<std::size_t>(a)])];
+    };
     layout.segmentStart = {0.0,
                            anchorAt(1),
                            anchorAt(2),
@@ -249,8 +273,10 @@ ColonLayout layoutColon(const AnatomyParameters& params, double sampleSpacing)
         for (int b = 1; b < kNumSegments; ++b) {
             const double halfWidth = std::min({0.03, 0.5 * params.length(static_cast<Segment>(b - 1)),
                                                0.5 * params.length(static_cast<Segment>(b))});
-            const double jump = 0.5 * (params.diameter(static_cast<Segment>(b)) - params.diameter(static_cast<Segment>(b - 1)));
-            radius += jump * smoothstep((s - layout.segmentStart[static_cast<std::size_t>(b)] + halfWidth) / (2.0 * halfWidth));
+            const double jump = 0.5 * (params.diameter(static_cast<Segment>(b)) -
+                                       params.diameter(static_cast<Segment>(b - 1)));
+            radius += jump * smoothstep((s - layout.segmentStart[static_cast<std::size_t>(b)] + halfWidth) /
+                                        (2.0 * halfWidth));
         }
         c.radius[i] = radius;
     }

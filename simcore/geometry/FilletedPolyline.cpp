@@ -31,22 +31,24 @@ Eigen::Vector3d FilletedPolyline::pointAt(double s) const
 {
     s = std::clamp(s, 0.0, length());
     const auto next = std::upper_bound(vertexArcLength.begin(), vertexArcLength.end(), s);
-    const auto i = static_cast<std::size_t>(std::clamp<std::ptrdiff_t>(next - vertexArcLength.begin() - 1, 0,
-                                                                        static_cast<std::ptrdiff_t>(points.size()) - 2));
+    const auto i = static_cast<std::size_t>(std::clamp<std::ptrdiff_t>(
+        next - vertexArcLength.begin() - 1, 0, static_cast<std::ptrdiff_t>(points.size()) - 2));
     double t = s - vertexArcLength[i];
     const double halfArc = 0.5 * bendRadius[i] * turn[i];
     if (t < halfArc) {
         return arcPoint(*this, i, 0.5 * turn[i] + t / bendRadius[i]);
     }
     t -= halfArc;
-    const double straight = std::max(0.0, (points[i + 1] - points[i]).norm() - tangentLength[i] - tangentLength[i + 1]);
+    const double straight =
+        std::max(0.0, (points[i + 1] - points[i]).norm() - tangentLength[i] - tangentLength[i + 1]);
     if (t <= straight || bendRadius[i + 1] <= 0.0) {
         return points[i] + (tangentLength[i] + t) * edgeDirection(points, i);
     }
     return arcPoint(*this, i + 1, std::min(turn[i + 1], (t - straight) / bendRadius[i + 1]));
 }
 
-FilletedPolyline filletPolyline(const std::vector<Eigen::Vector3d>& points, const std::vector<double>& lumenRadius)
+FilletedPolyline filletPolyline(const std::vector<Eigen::Vector3d>& points,
+                                const std::vector<double>& lumenRadius)
 {
     const std::size_t n = points.size();
     FilletedPolyline f;
@@ -75,8 +77,8 @@ FilletedPolyline filletPolyline(const std::vector<Eigen::Vector3d>& points, cons
     for (std::size_t i = 1; i < n; ++i) {
         const double edge = (points[i] - points[i - 1]).norm();
         const double straight = std::max(0.0, edge - f.tangentLength[i - 1] - f.tangentLength[i]);
-        f.vertexArcLength[i] = f.vertexArcLength[i - 1] + 0.5 * f.bendRadius[i - 1] * f.turn[i - 1] + straight +
-                               0.5 * f.bendRadius[i] * f.turn[i];
+        f.vertexArcLength[i] = f.vertexArcLength[i - 1] + 0.5 * f.bendRadius[i - 1] * f.turn[i - 1] +
+                               straight + 0.5 * f.bendRadius[i] * f.turn[i];
     }
     return f;
 }

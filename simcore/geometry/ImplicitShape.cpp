@@ -13,7 +13,8 @@ Eigen::Vector3d anyUnitPerpendicular(const Eigen::Vector3d& axis)
     if (axis.squaredNorm() < 1e-30) {
         return Eigen::Vector3d::UnitX();
     }
-    const Eigen::Vector3d other = std::abs(axis.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
+    const Eigen::Vector3d other =
+        std::abs(axis.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
     return axis.cross(other).normalized();
 }
 

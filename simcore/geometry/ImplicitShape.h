@@ -17,11 +17,11 @@ struct ImplicitShape {
     std::string name;
     Kind kind = Kind::Ellipsoid;
     Side side = Side::KeepOutside;
-    Eigen::Vector3d centre = Eigen::Vector3d::Zero();     ///< ellipsoid centre, m
-    Eigen::Vector3d semiAxes = Eigen::Vector3d::Ones();   ///< ellipsoid semi-axes along x, y, z, m
-    Eigen::Vector3d capsuleA = Eigen::Vector3d::Zero();   ///< capsule segment end, m
-    Eigen::Vector3d capsuleB = Eigen::Vector3d::Zero();   ///< capsule segment end, m
-    double capsuleRadius = 0.0;                           ///< m
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();    ///< ellipsoid centre, m
+    Eigen::Vector3d semiAxes = Eigen::Vector3d::Ones();  ///< ellipsoid semi-axes along x, y, z, m
+    Eigen::Vector3d capsuleA = Eigen::Vector3d::Zero();  ///< capsule segment end, m
+    Eigen::Vector3d capsuleB = Eigen::Vector3d::Zero();  ///< capsule segment end, m
+    double capsuleRadius = 0.0;                          ///< m
 
     /// Signed distance to the surface (m), negative inside the shape, with the
     /// outward unit gradient. For ellipsoids it is a first-order approximation

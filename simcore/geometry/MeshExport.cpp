@@ -40,7 +40,8 @@ void writeObj(const std::filesystem::path& path, const TriangleMesh& mesh)
 {
     std::ofstream out = openFor(path, std::ios::out);
     for (Eigen::Index i = 0; i < mesh.vertices.cols(); ++i) {
-        out << "v " << mesh.vertices(0, i) << ' ' << mesh.vertices(1, i) << ' ' << mesh.vertices(2, i) << '\n';
+        out << "v " << mesh.vertices(0, i) << ' ' << mesh.vertices(1, i) << ' ' << mesh.vertices(2, i)
+            << '\n';
     }
     for (const auto& t : mesh.triangles) {
         out << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
@@ -56,7 +57,8 @@ void writeStl(const std::filesystem::path& path, const TriangleMesh& mesh, MeshE
             const Eigen::Vector3d n = faceNormal(mesh, t);
             out << "facet normal " << n.x() << ' ' << n.y() << ' ' << n.z() << "\nouter loop\n";
             for (int k : t) {
-                out << "vertex " << mesh.vertices(0, k) << ' ' << mesh.vertices(1, k) << ' ' << mesh.vertices(2, k) << '\n';
+                out << "vertex " << mesh.vertices(0, k) << ' ' << mesh.vertices(1, k) << ' '
+                    << mesh.vertices(2, k) << '\n';
             }
             out << "endloop\nendfacet\n";
         }
@@ -69,9 +71,11 @@ void writeStl(const std::filesystem::path& path, const TriangleMesh& mesh, MeshE
     put(out, static_cast<std::uint32_t>(mesh.triangles.size()));
     for (const auto& t : mesh.triangles) {
         const Eigen::Vector3d n = faceNormal(mesh, t);
-        for (int c = 0; c < 3; ++c) put(out, static_cast<float>(n[c]));
+        for (int c = 0; c < 3; ++c)
+            put(out, static_cast<float>(n[c]));
         for (int k : t) {
-            for (int c = 0; c < 3; ++c) put(out, static_cast<float>(mesh.vertices(c, k)));
+            for (int c = 0; c < 3; ++c)
+                put(out, static_cast<float>(mesh.vertices(c, k)));
         }
         put(out, std::uint16_t{0});
     }
@@ -82,11 +86,14 @@ void writePly(const std::filesystem::path& path, const TriangleMesh& mesh, MeshE
     const bool binary = encoding == MeshEncoding::Binary;
     std::ofstream out = openFor(path, binary ? std::ios::out | std::ios::binary : std::ios::out);
     out << "ply\nformat " << (binary ? "binary_little_endian" : "ascii") << " 1.0\n"
-        << "element vertex " << mesh.vertices.cols() << "\nproperty double x\nproperty double y\nproperty double z\n"
-        << "element face " << mesh.triangles.size() << "\nproperty list uchar int vertex_indices\nend_header\n";
+        << "element vertex " << mesh.vertices.cols()
+        << "\nproperty double x\nproperty double y\nproperty double z\n"
+        << "element face " << mesh.triangles.size()
+        << "\nproperty list uchar int vertex_indices\nend_header\n";
     for (Eigen::Index i = 0; i < mesh.vertices.cols(); ++i) {
         if (binary) {
-            for (int c = 0; c < 3; ++c) put(out, mesh.vertices(c, i));
+            for (int c = 0; c < 3; ++c)
+                put(out, mesh.vertices(c, i));
         } else {
             out << mesh.vertices(0, i) << ' ' << mesh.vertices(1, i) << ' ' << mesh.vertices(2, i) << '\n';
         }
@@ -94,7 +101,8 @@ void writePly(const std::filesystem::path& path, const TriangleMesh& mesh, MeshE
     for (const auto& t : mesh.triangles) {
         if (binary) {
             put(out, std::uint8_t{3});
-            for (int k : t) put(out, static_cast<std::int32_t>(k));
+            for (int k : t)
+                put(out, static_cast<std::int32_t>(k));
         } else {
             out << "3 " << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
         }

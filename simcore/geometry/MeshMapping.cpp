@@ -23,8 +23,8 @@ struct Solve {
 };
 
 /// Newton's method on F(u, w, d) = x0 + u e1 + w e2 + d n(u, w) - v.
-Solve solveBinding(const Eigen::Vector3d& v, const std::array<Eigen::Vector3d, 3>& x, const std::array<Eigen::Vector3d, 3>& n,
-                   const Eigen::Vector3d& startBary)
+Solve solveBinding(const Eigen::Vector3d& v, const std::array<Eigen::Vector3d, 3>& x,
+                   const std::array<Eigen::Vector3d, 3>& n, const Eigen::Vector3d& startBary)
 {
     const Eigen::Vector3d e1 = x[1] - x[0];
     const Eigen::Vector3d e2 = x[2] - x[0];
@@ -71,10 +71,12 @@ Solve solveBinding(const Eigen::Vector3d& v, const std::array<Eigen::Vector3d, 3
 
 }  // namespace
 
-MeshMapping::MeshMapping(const TriangleMesh& physicsRest, const Eigen::Matrix3Xd& visualRest) : m_visualRest(visualRest)
+MeshMapping::MeshMapping(const TriangleMesh& physicsRest, const Eigen::Matrix3Xd& visualRest)
+    : m_visualRest(visualRest)
 {
     if (physicsRest.numTriangles() == 0 || visualRest.cols() == 0) {
-        throw std::invalid_argument("MeshMapping: physics mesh has " + std::to_string(physicsRest.numTriangles()) +
+        throw std::invalid_argument("MeshMapping: physics mesh has " +
+                                    std::to_string(physicsRest.numTriangles()) +
                                     " triangles and visual mesh " + std::to_string(visualRest.cols()) +
                                     " vertices (allowed: both > 0)");
     }
@@ -89,7 +91,8 @@ void MeshMapping::remap(std::span<const int> visualVertices, const TriangleMesh&
     bindVertices(visualVertices, physicsRest);
 }
 
-void MeshMapping::computeVertexNormals(const Eigen::Matrix3Xd& x, const std::vector<std::array<int, 3>>& triangles,
+void MeshMapping::computeVertexNormals(const Eigen::Matrix3Xd& x,
+                                       const std::vector<std::array<int, 3>>& triangles,
                                        Eigen::Matrix3Xd& normals)
 {
     if (normals.cols() != x.cols()) {
@@ -128,7 +131,8 @@ void MeshMapping::bindVertices(std::span<const int> visualVertices, const Triang
         std::array<int, 3> bestNodes{};
         for (const auto& candidate : candidates) {
             const auto& t = m_triangles[static_cast<std::size_t>(candidate.triangle)];
-            const std::array<Eigen::Vector3d, 3> x{physicsRest.vertices.col(t[0]), physicsRest.vertices.col(t[1]),
+            const std::array<Eigen::Vector3d, 3> x{physicsRest.vertices.col(t[0]),
+                                                   physicsRest.vertices.col(t[1]),
                                                    physicsRest.vertices.col(t[2])};
             const std::array<Eigen::Vector3d, 3> n{normals.col(t[0]), normals.col(t[1]), normals.col(t[2])};
             Eigen::Vector3d bary;
@@ -151,10 +155,13 @@ void MeshMapping::bindVertices(std::span<const int> visualVertices, const Triang
             // No smooth-normal solution: fall back to the nearest point and the face normal.
             const auto& t = m_triangles[static_cast<std::size_t>(candidates.front().triangle)];
             Eigen::Vector3d bary;
-            const Eigen::Vector3d q = closestPointOnTriangle(v, physicsRest.vertices.col(t[0]), physicsRest.vertices.col(t[1]),
-                                                             physicsRest.vertices.col(t[2]), &bary);
+            const Eigen::Vector3d q =
+                closestPointOnTriangle(v, physicsRest.vertices.col(t[0]), physicsRest.vertices.col(t[1]),
+                                       physicsRest.vertices.col(t[2]), &bary);
             best.weight = bary;
-            const Eigen::Vector3d nb = (bary.x() * normals.col(t[0]) + bary.y() * normals.col(t[1]) + bary.z() * normals.col(t[2])).normalized();
+            const Eigen::Vector3d nb =
+                (bary.x() * normals.col(t[0]) + bary.y() * normals.col(t[1]) + bary.z() * normals.col(t[2]))
+                    .normalized();
             best.offset = (v - q).dot(nb);
             best.residual = (v - q - best.offset * nb).norm();
             bestNodes = t;

@@ -63,7 +63,8 @@ public:
     [[nodiscard]] double maxRestResidual() const { return m_maxRestResidual; }
 
     /// Area-weighted, normalised vertex normals (the smooth normal field).
-    static void computeVertexNormals(const Eigen::Matrix3Xd& positions, const std::vector<std::array<int, 3>>& triangles,
+    static void computeVertexNormals(const Eigen::Matrix3Xd& positions,
+                                     const std::vector<std::array<int, 3>>& triangles,
                                      Eigen::Matrix3Xd& normals);
 
 private:

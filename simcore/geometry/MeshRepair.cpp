@@ -15,17 +15,23 @@ namespace colonosim::geometry {
 namespace {
 
 using Edge = std::pair<int, int>;
-Edge undirected(int a, int b) { return {std::min(a, b), std::max(a, b)}; }
+Edge undirected(int a, int b)
+{
+    return {std::min(a, b), std::max(a, b)};
+}
 
-[[noreturn]] void refuse(const std::string& label, const std::string& what) { throw MeshImportError(label + ": " + what); }
+[[noreturn]] void refuse(const std::string& label, const std::string& what)
+{
+    throw MeshImportError(label + ": " + what);
+}
 
 void checkFinite(const TriangleMesh& mesh, const std::string& label)
 {
     for (Eigen::Index i = 0; i < mesh.vertices.cols(); ++i) {
         if (!mesh.vertices.col(i).allFinite()) {
             std::ostringstream s;
-            s << "vertex " << i << " has a non-finite coordinate (" << mesh.vertices(0, i) << ", " << mesh.vertices(1, i)
-              << ", " << mesh.vertices(2, i) << "; allowed: finite numbers)";
+            s << "vertex " << i << " has a non-finite coordinate (" << mesh.vertices(0, i) << ", "
+              << mesh.vertices(1, i) << ", " << mesh.vertices(2, i) << "; allowed: finite numbers)";
             refuse(label, s.str());
         }
     }
@@ -41,7 +47,8 @@ void mergeVertices(TriangleMesh& mesh, MeshRepairReport& report)
     Eigen::Matrix3Xd kept(3, mesh.vertices.cols());
     int numKept = 0;
     for (Eigen::Index i = 0; i < mesh.vertices.cols(); ++i) {
-        const std::array<long long, 3> key{std::llround(mesh.vertices(0, i) / eps), std::llround(mesh.vertices(1, i) / eps),
+        const std::array<long long, 3> key{std::llround(mesh.vertices(0, i) / eps),
+                                           std::llround(mesh.vertices(1, i) / eps),
                                            std::llround(mesh.vertices(2, i) / eps)};
         const auto [it, inserted] = seen.try_emplace(key, numKept);
         if (inserted) {
@@ -52,7 +59,8 @@ void mergeVertices(TriangleMesh& mesh, MeshRepairReport& report)
     report.numMergedVertices = static_cast<int>(mesh.vertices.cols()) - numKept;
     mesh.vertices = kept.leftCols(numKept);
     for (auto& t : mesh.triangles) {
-        for (int& k : t) k = remap[static_cast<std::size_t>(k)];
+        for (int& k : t)
+            k = remap[static_cast<std::size_t>(k)];
     }
 }
 
@@ -85,7 +93,9 @@ std::map<Edge, std::vector<int>> edgeFaces(const TriangleMesh& mesh)
     std::map<Edge, std::vector<int>> faces;
     for (int f = 0; f < mesh.numTriangles(); ++f) {
         const auto& t = mesh.triangles[static_cast<std::size_t>(f)];
-        for (int k = 0; k < 3; ++k) faces[undirected(t[static_cast<std::size_t>(k)], t[static_cast<std::size_t>((k + 1) % 3)])].push_back(f);
+        for (int k = 0; k < 3; ++k)
+            faces[undirected(t[static_cast<std::size_t>(k)], t[static_cast<std::size_t>((k + 1) % 3)])]
+                .push_back(f);
     }
     return faces;
 }
@@ -93,13 +103,15 @@ std::map<Edge, std::vector<int>> edgeFaces(const TriangleMesh& mesh)
 bool hasDirectedEdge(const std::array<int, 3>& t, int a, int b)
 {
     for (int k = 0; k < 3; ++k) {
-        if (t[static_cast<std::size_t>(k)] == a && t[static_cast<std::size_t>((k + 1) % 3)] == b) return true;
+        if (t[static_cast<std::size_t>(k)] == a && t[static_cast<std::size_t>((k + 1) % 3)] == b)
+            return true;
     }
     return false;
 }
 
 /// Breadth-first orientation; also counts components.
-void orient(TriangleMesh& mesh, const std::map<Edge, std::vector<int>>& faces, const std::string& label, MeshRepairReport& report)
+void orient(TriangleMesh& mesh, const std::map<Edge, std::vector<int>>& faces, const std::string& label,
+            MeshRepairReport& report)
 {
     std::vector<std::vector<int>> neighbours(mesh.triangles.size());
     for (const auto& [edge, list] : faces) {
@@ -111,7 +123,8 @@ void orient(TriangleMesh& mesh, const std::map<Edge, std::vector<int>>& faces, c
     std::vector<char> visited(mesh.triangles.size(), 0);
     int numComponents = 0;
     for (std::size_t seed = 0; seed < mesh.triangles.size(); ++seed) {
-        if (visited[seed]) continue;
+        if (visited[seed])
+            continue;
         ++numComponents;
         std::queue<int> queue;
         queue.push(static_cast<int>(seed));
@@ -125,12 +138,19 @@ void orient(TriangleMesh& mesh, const std::map<Edge, std::vector<int>>& faces, c
                 // The shared edge must run the other way in the neighbour.
                 int a = -1, b = -1;
                 for (int k = 0; k < 3; ++k) {
-                    const int p = t[static_cast<std::size_t>(k)], q = t[static_cast<std::size_t>((k + 1) % 3)];
-                    if (std::find(u.begin(), u.end(), p) != u.end() && std::find(u.begin(), u.end(), q) != u.end()) { a = p; b = q; }
+                    const int p = t[static_cast<std::size_t>(k)],
+                              q = t[static_cast<std::size_t>((k + 1) % 3)];
+                    if (std::find(u.begin(), u.end(), p) != u.end() &&
+                        std::find(u.begin(), u.end(), q) != u.end()) {
+                        a = p;
+                        b = q;
+                    }
                 }
                 const bool consistent = hasDirectedEdge(u, b, a);
                 if (visited[static_cast<std::size_t>(g)]) {
-                    if (!consistent) refuse(label, "non-orientable surface: faces " + std::to_string(f) + " and " + std::to_string(g) + " cannot agree (allowed: orientable)");
+                    if (!consistent)
+                        refuse(label, "non-orientable surface: faces " + std::to_string(f) + " and " +
+                                          std::to_string(g) + " cannot agree (allowed: orientable)");
                     continue;
                 }
                 if (!consistent) {
@@ -156,7 +176,8 @@ std::vector<Loop> boundaryLoops(const TriangleMesh& mesh, const std::map<Edge, s
 {
     std::unordered_map<int, int> next;  // directed boundary edge a -> b as in its face
     for (const auto& [edge, list] : faces) {
-        if (list.size() != 1) continue;
+        if (list.size() != 1)
+            continue;
         const auto& t = mesh.triangles[static_cast<std::size_t>(list[0])];
         const bool forward = hasDirectedEdge(t, edge.first, edge.second);
         next[forward ? edge.first : edge.second] = forward ? edge.second : edge.first;
@@ -164,7 +185,8 @@ std::vector<Loop> boundaryLoops(const TriangleMesh& mesh, const std::map<Edge, s
     std::vector<Loop> loops;
     std::set<int> used;
     for (const auto& [start, unused] : next) {
-        if (used.contains(start)) continue;
+        if (used.contains(start))
+            continue;
         Loop loop;
         int v = start;
         while (!used.contains(v) && next.contains(v)) {
@@ -176,19 +198,22 @@ std::vector<Loop> boundaryLoops(const TriangleMesh& mesh, const std::map<Edge, s
         }
         loops.push_back(std::move(loop));
     }
-    std::sort(loops.begin(), loops.end(), [](const Loop& a, const Loop& b) { return a.perimeter > b.perimeter; });
+    std::sort(loops.begin(), loops.end(),
+              [](const Loop& a, const Loop& b) { return a.perimeter > b.perimeter; });
     return loops;
 }
 
 Eigen::Vector3d centroidOf(const TriangleMesh& mesh, const Loop& loop)
 {
     Eigen::Vector3d c = Eigen::Vector3d::Zero();
-    for (int v : loop.vertices) c += mesh.vertices.col(v);
+    for (int v : loop.vertices)
+        c += mesh.vertices.col(v);
     return c / static_cast<double>(loop.vertices.size());
 }
 
 /// Adds a fan closing `loop`; the fan traverses the loop edges backwards.
-void appendFan(TriangleMesh& mesh, const Loop& loop, std::vector<std::array<int, 3>>& out, Eigen::Matrix3Xd& vertices)
+void appendFan(TriangleMesh& mesh, const Loop& loop, std::vector<std::array<int, 3>>& out,
+               Eigen::Matrix3Xd& vertices)
 {
     const int centre = static_cast<int>(vertices.cols());
     vertices.conservativeResize(3, centre + 1);
@@ -204,10 +229,11 @@ void appendFan(TriangleMesh& mesh, const Loop& loop, std::vector<std::array<int,
 std::string MeshRepairReport::summary() const
 {
     std::ostringstream s;
-    s << numInputVertices << " vertices / " << numInputTriangles << " faces read; merged " << numMergedVertices
-      << " duplicate vertices; dropped " << numDegenerateFacesRemoved << " degenerate and " << numDuplicateFacesRemoved
-      << " duplicate faces; re-oriented " << numFacesReoriented << " faces" << (globallyFlipped ? "; flipped all faces" : "")
-      << "; " << numOpenEnds << " open ends; filled " << numHolesFilled << " holes";
+    s << numInputVertices << " vertices / " << numInputTriangles << " faces read; merged "
+      << numMergedVertices << " duplicate vertices; dropped " << numDegenerateFacesRemoved
+      << " degenerate and " << numDuplicateFacesRemoved << " duplicate faces; re-oriented "
+      << numFacesReoriented << " faces" << (globallyFlipped ? "; flipped all faces" : "") << "; "
+      << numOpenEnds << " open ends; filled " << numHolesFilled << " holes";
     return s.str();
 }
 
@@ -217,30 +243,36 @@ MeshRepairReport repairTubeMesh(TriangleMesh& mesh, const std::string& label)
     report.numInputVertices = mesh.numVertices();
     report.numInputTriangles = mesh.numTriangles();
     if (mesh.numTriangles() == 0 || mesh.numVertices() < 3) {
-        refuse(label, "empty mesh (" + std::to_string(mesh.numVertices()) + " vertices, " + std::to_string(mesh.numTriangles()) + " faces; allowed: at least 1 face)");
+        refuse(label, "empty mesh (" + std::to_string(mesh.numVertices()) + " vertices, " +
+                          std::to_string(mesh.numTriangles()) + " faces; allowed: at least 1 face)");
     }
     for (const auto& t : mesh.triangles) {
         for (int k : t) {
-            if (k < 0 || k >= mesh.numVertices()) refuse(label, "face index " + std::to_string(k) + " out of range (allowed: 0.." + std::to_string(mesh.numVertices() - 1) + ")");
+            if (k < 0 || k >= mesh.numVertices())
+                refuse(label, "face index " + std::to_string(k) + " out of range (allowed: 0.." +
+                                  std::to_string(mesh.numVertices() - 1) + ")");
         }
     }
     checkFinite(mesh, label);
     mergeVertices(mesh, report);
     dropDegenerate(mesh, report);
-    if (mesh.triangles.empty()) refuse(label, "no non-degenerate face (allowed: at least 1)");
+    if (mesh.triangles.empty())
+        refuse(label, "no non-degenerate face (allowed: at least 1)");
 
     auto faces = edgeFaces(mesh);
     int numNonManifold = 0;
     const std::pair<const Edge, std::vector<int>>* first = nullptr;
     for (const auto& entry : faces) {
         if (entry.second.size() > 2) {
-            if (first == nullptr) first = &entry;
+            if (first == nullptr)
+                first = &entry;
             ++numNonManifold;
         }
     }
     if (first != nullptr) {
-        refuse(label, "non-manifold edge (vertices " + std::to_string(first->first.first) + ", " + std::to_string(first->first.second) +
-                          ") shared by " + std::to_string(first->second.size()) + " faces (allowed: at most 2); " +
+        refuse(label, "non-manifold edge (vertices " + std::to_string(first->first.first) + ", " +
+                          std::to_string(first->first.second) + ") shared by " +
+                          std::to_string(first->second.size()) + " faces (allowed: at most 2); " +
                           std::to_string(numNonManifold) + " such edge(s)");
     }
     orient(mesh, faces, label, report);
@@ -259,7 +291,8 @@ MeshRepairReport repairTubeMesh(TriangleMesh& mesh, const std::string& label)
         } else {
             std::ostringstream s;
             s << "boundary loop of " << loop.vertices.size() << " edges and perimeter " << loop.perimeter
-              << " is too large to fill (allowed: 2 open ends plus holes shorter than " << kMaxHoleFraction << " x " << longest << ")";
+              << " is too large to fill (allowed: 2 open ends plus holes shorter than " << kMaxHoleFraction
+              << " x " << longest << ")";
             refuse(label, s.str());
         }
     }
@@ -270,13 +303,16 @@ MeshRepairReport repairTubeMesh(TriangleMesh& mesh, const std::string& label)
     // Signed volume with the open ends virtually capped: positive when normals point out.
     std::vector<std::array<int, 3>> closed = mesh.triangles;
     Eigen::Matrix3Xd closedVertices = mesh.vertices;
-    for (const Loop& end : ends) appendFan(mesh, end, closed, closedVertices);
+    for (const Loop& end : ends)
+        appendFan(mesh, end, closed, closedVertices);
     double volume = 0.0;
     for (const auto& t : closed) {
-        volume += closedVertices.col(t[0]).dot(closedVertices.col(t[1]).cross(closedVertices.col(t[2]))) / 6.0;
+        volume +=
+            closedVertices.col(t[0]).dot(closedVertices.col(t[1]).cross(closedVertices.col(t[2]))) / 6.0;
     }
     if (volume < 0.0) {
-        for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
+        for (auto& t : mesh.triangles)
+            std::swap(t[1], t[2]);
         report.globallyFlipped = true;
     }
     return report;

@@ -46,7 +46,7 @@ struct MeshRepairReport {
     [[nodiscard]] bool anyRepair() const
     {
         return numMergedVertices > 0 || numDegenerateFacesRemoved > 0 || numDuplicateFacesRemoved > 0 ||
-            numFacesReoriented > 0 || globallyFlipped || numHolesFilled > 0;
+               numFacesReoriented > 0 || globallyFlipped || numHolesFilled > 0;
     }
     [[nodiscard]] std::string summary() const;
 };

@@ -28,7 +28,8 @@ struct Tube {
 /// Rings at the arc lengths `ringS`, then `numCapRings - 1` dome rings and an
 /// apex. `radiusAt(s, theta)` gives the wall radius of the tube part.
 template <class RadiusFn>
-Tube buildTube(const Centreline& c, const std::vector<double>& ringS, int perRing, int numCapRings, RadiusFn radiusAt)
+Tube buildTube(const Centreline& c, const std::vector<double>& ringS, int perRing, int numCapRings,
+               RadiusFn radiusAt)
 {
     Tube tube;
     const int numRings = static_cast<int>(ringS.size());
@@ -42,7 +43,8 @@ Tube buildTube(const Centreline& c, const std::vector<double>& ringS, int perRin
         for (int j = 0; j < perRing; ++j) {
             const double theta = angle(j);
             const double r = radiusAt(s, theta);
-            tube.mesh.vertices.col(v) = cs.point + r * (std::cos(theta) * cs.normal + std::sin(theta) * cs.binormal);
+            tube.mesh.vertices.col(v) =
+                cs.point + r * (std::cos(theta) * cs.normal + std::sin(theta) * cs.binormal);
             tube.where[static_cast<std::size_t>(v++)] = {s, theta, false};
         }
     }
@@ -53,7 +55,8 @@ Tube buildTube(const Centreline& c, const std::vector<double>& ringS, int perRin
         for (int j = 0; j < perRing; ++j) {
             const double theta = angle(j);
             const Eigen::Vector3d radial = std::cos(theta) * end.normal + std::sin(theta) * end.binormal;
-            tube.mesh.vertices.col(v) = end.point + end.radius * std::cos(phi) * radial + capDepth * std::sin(phi) * end.tangent;
+            tube.mesh.vertices.col(v) =
+                end.point + end.radius * std::cos(phi) * radial + capDepth * std::sin(phi) * end.tangent;
             tube.where[static_cast<std::size_t>(v++)] = {c.length(), theta, true};
         }
     }
@@ -113,7 +116,8 @@ Attachment attachmentOf(const AnatomyParameters& p, const ColonLayout& layout, d
     switch (segment) {
     case Segment::Sigmoid:
     case Segment::Transverse: return Attachment::Mesenteric;
-    case Segment::Descending: return p.isDescendingMobile() ? Attachment::Mesenteric : Attachment::Retroperitoneal;
+    case Segment::Descending:
+        return p.isDescendingMobile() ? Attachment::Mesenteric : Attachment::Retroperitoneal;
     case Segment::Ascending:
     case Segment::Cecum: {
         const double mobileLength = p.ascendingMobileFraction * (p.ascendingLength + p.cecumLength);
@@ -145,7 +149,8 @@ ColonAnatomy buildProceduralColon(const AnatomyParameters& params)
     const int physPerRing = static_cast<int>(std::lround(params.physicsNodesPerRing));
     constexpr int kPhysicsCapRings = 2;
     const int capNodes = (kPhysicsCapRings - 1) * physPerRing + 1;
-    const int physRings = std::max(3, static_cast<int>(std::lround((params.physicsTargetNodeCount - capNodes) / physPerRing)));
+    const int physRings =
+        std::max(3, static_cast<int>(std::lround((params.physicsTargetNodeCount - capNodes) / physPerRing)));
     const Tube physics = buildTube(c, evenRings(total, physRings), physPerRing, kPhysicsCapRings,
                                    [&](double s, double) { return sampleCentreline(c, s).radius; });
     anatomy.physicsMesh = physics.mesh;
@@ -159,9 +164,11 @@ ColonAnatomy buildProceduralColon(const AnatomyParameters& params)
         info.angle = tv.theta;
         info.attachment = attachmentOf(params, layout, tv.s, cs.segment);
         const Eigen::Vector3d rest = physics.mesh.vertices.col(static_cast<Eigen::Index>(i));
-        info.mesenteryRoot = info.attachment == Attachment::Mesenteric
-            ? Eigen::Vector3d(cs.point + (mesenteryHeight(params, cs.segment) + cs.radius) * Eigen::Vector3d::UnitY())
-            : rest;
+        info.mesenteryRoot =
+            info.attachment == Attachment::Mesenteric
+                ? Eigen::Vector3d(cs.point + (mesenteryHeight(params, cs.segment) + cs.radius) *
+                                                 Eigen::Vector3d::UnitY())
+                : rest;
     }
 
     // Visual mesh with haustral folds and taeniae.
@@ -172,7 +179,8 @@ ColonAnatomy buildProceduralColon(const AnatomyParameters& params)
     const auto visualRadius = [&](double s, double theta) {
         const double r = sampleCentreline(c, s).radius;
         const double haustra = smoothstep((s - rectumEnd + 0.02) / 0.04);
-        const double fold = std::pow(0.5 * (1.0 + std::cos(2.0 * std::numbers::pi * (s - rectumEnd) / params.haustralFoldSpacing)), 6);
+        const double fold = std::pow(
+            0.5 * (1.0 + std::cos(2.0 * std::numbers::pi * (s - rectumEnd) / params.haustralFoldSpacing)), 6);
         double taenia = 0.0;
         for (int k = 0; k < 3; ++k) {
             double d = std::remainder(theta - 2.0 * std::numbers::pi * k / 3.0, 2.0 * std::numbers::pi);
@@ -181,15 +189,19 @@ ColonAnatomy buildProceduralColon(const AnatomyParameters& params)
         return r - haustra * (params.haustralFoldDepth * fold * (1.0 - taenia) + params.taeniaDepth * taenia);
     };
     constexpr int kVisualCapRings = 8;
-    anatomy.visualMesh = buildTube(c, evenRings(total, visRings), visPerRing, kVisualCapRings, visualRadius).mesh;
+    anatomy.visualMesh =
+        buildTube(c, evenRings(total, visRings), visPerRing, kVisualCapRings, visualRadius).mesh;
 
     // Landmarks.
-    const CentrelineSample icv = sampleCentreline(c, layout.segmentStart[static_cast<std::size_t>(Segment::Cecum)]);
-    Eigen::Vector3d medial = Eigen::Vector3d::UnitX() - Eigen::Vector3d::UnitX().dot(icv.tangent) * icv.tangent;
+    const CentrelineSample icv =
+        sampleCentreline(c, layout.segmentStart[static_cast<std::size_t>(Segment::Cecum)]);
+    Eigen::Vector3d medial =
+        Eigen::Vector3d::UnitX() - Eigen::Vector3d::UnitX().dot(icv.tangent) * icv.tangent;
     medial.normalize();
     Landmark valve{"ileocecal_valve", Segment::Cecum, icv.point + icv.radius * medial, -medial, -1};
     const CentrelineSample end = sampleCentreline(c, total);
-    Landmark orifice{"appendiceal_orifice", Segment::Cecum, end.point + 0.5 * end.radius * end.tangent, -end.tangent, -1};
+    Landmark orifice{"appendiceal_orifice", Segment::Cecum, end.point + 0.5 * end.radius * end.tangent,
+                     -end.tangent, -1};
     for (Landmark* l : {&valve, &orifice}) {
         l->nearestPhysicsNode = nearestVertex(anatomy.physicsMesh, l->position);
         anatomy.landmarks.push_back(*l);

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <array>
-#include <string>
 #include <limits>
+#include <string>
 
 namespace colonosim::geometry {
 
@@ -59,11 +59,16 @@ std::vector<ImplicitShape> placeProceduralOrgans(const ColonLayout& layout, cons
     const Eigen::Vector3d ascendingTop = st[static_cast<std::size_t>(Segment::Ascending)];
 
     std::vector<ImplicitShape> organs;
-    organs.push_back(ellipsoid("liver", hepatic + k * Eigen::Vector3d(-0.01, 0.02, 0.10), k * Eigen::Vector3d(0.10, 0.075, 0.06)));
-    organs.push_back(ellipsoid("spleen", splenic + k * Eigen::Vector3d(0.04, 0.06, 0.06), k * Eigen::Vector3d(0.035, 0.06, 0.06)));
-    organs.push_back(ellipsoid("left_kidney", descendingTop + k * Eigen::Vector3d(-0.06, 0.07, -0.07), k * Eigen::Vector3d(0.03, 0.025, 0.055)));
-    organs.push_back(ellipsoid("right_kidney", ascendingTop + k * Eigen::Vector3d(0.06, 0.06, -0.03), k * Eigen::Vector3d(0.03, 0.025, 0.055)));
-    organs.push_back(ellipsoid("bladder", k * Eigen::Vector3d(0.0, -0.05, 0.07), k * Eigen::Vector3d(0.045, 0.035, 0.04)));
+    organs.push_back(ellipsoid("liver", hepatic + k * Eigen::Vector3d(-0.01, 0.02, 0.10),
+                               k * Eigen::Vector3d(0.10, 0.075, 0.06)));
+    organs.push_back(ellipsoid("spleen", splenic + k * Eigen::Vector3d(0.04, 0.06, 0.06),
+                               k * Eigen::Vector3d(0.035, 0.06, 0.06)));
+    organs.push_back(ellipsoid("left_kidney", descendingTop + k * Eigen::Vector3d(-0.06, 0.07, -0.07),
+                               k * Eigen::Vector3d(0.03, 0.025, 0.055)));
+    organs.push_back(ellipsoid("right_kidney", ascendingTop + k * Eigen::Vector3d(0.06, 0.06, -0.03),
+                               k * Eigen::Vector3d(0.03, 0.025, 0.055)));
+    organs.push_back(
+        ellipsoid("bladder", k * Eigen::Vector3d(0.0, -0.05, 0.07), k * Eigen::Vector3d(0.045, 0.035, 0.04)));
     ImplicitShape spine;
     spine.name = "spine";
     spine.kind = ImplicitShape::Kind::Capsule;
@@ -72,8 +77,9 @@ std::vector<ImplicitShape> placeProceduralOrgans(const ColonLayout& layout, cons
     spine.capsuleRadius = k * 0.025;
     organs.push_back(spine);
 
-    const std::array<Eigen::Vector3d, 6> away{{Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitY(),
-                                               Eigen::Vector3d::UnitY(), -Eigen::Vector3d::UnitY(), Eigen::Vector3d::UnitY()}};
+    const std::array<Eigen::Vector3d, 6> away{{Eigen::Vector3d::UnitZ(), Eigen::Vector3d::UnitZ(),
+                                               Eigen::Vector3d::UnitY(), Eigen::Vector3d::UnitY(),
+                                               -Eigen::Vector3d::UnitY(), Eigen::Vector3d::UnitY()}};
     for (std::size_t i = 0; i < organs.size(); ++i) {
         clearRestNodes(organs[i], restMesh, away[i]);
     }
@@ -82,7 +88,8 @@ std::vector<ImplicitShape> placeProceduralOrgans(const ColonLayout& layout, cons
     // grown until every node is inside by kCavityMargin.
     const Eigen::Vector3d lo = restMesh.vertices.rowwise().minCoeff();
     const Eigen::Vector3d hi = restMesh.vertices.rowwise().maxCoeff();
-    ImplicitShape cavity = ellipsoid("abdominal_cavity", 0.5 * (lo + hi), 0.5 * (hi - lo) + Eigen::Vector3d::Constant(kCavityMargin));
+    ImplicitShape cavity = ellipsoid("abdominal_cavity", 0.5 * (lo + hi),
+                                     0.5 * (hi - lo) + Eigen::Vector3d::Constant(kCavityMargin));
     cavity.side = ImplicitShape::Side::KeepInside;
     for (int it = 0; it < 200; ++it) {
         double worst = -std::numeric_limits<double>::infinity();

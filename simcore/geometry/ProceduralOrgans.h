@@ -27,6 +27,7 @@ namespace colonosim::geometry {
 inline constexpr double kOrganClearance = 0.005;  ///< m
 inline constexpr double kCavityMargin = 0.02;     ///< m
 
-[[nodiscard]] std::vector<ImplicitShape> placeProceduralOrgans(const ColonLayout& layout, const TriangleMesh& restMesh);
+[[nodiscard]] std::vector<ImplicitShape> placeProceduralOrgans(const ColonLayout& layout,
+                                                               const TriangleMesh& restMesh);
 
 }  // namespace colonosim::geometry

@@ -6,8 +6,9 @@
 
 namespace colonosim::geometry {
 
-Eigen::Vector3d closestPointOnTriangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
-                                       const Eigen::Vector3d& c, Eigen::Vector3d* bary)
+Eigen::Vector3d closestPointOnTriangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
+                                       const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+                                       Eigen::Vector3d* bary)
 {
     const auto out = [bary](double u, double v, double w, const Eigen::Vector3d& q) {
         if (bary != nullptr) {
@@ -20,11 +21,13 @@ Eigen::Vector3d closestPointOnTriangle(const Eigen::Vector3d& p, const Eigen::Ve
     const Eigen::Vector3d ap = p - a;
     const double d1 = ab.dot(ap);
     const double d2 = ac.dot(ap);
-    if (d1 <= 0.0 && d2 <= 0.0) return out(1, 0, 0, a);
+    if (d1 <= 0.0 && d2 <= 0.0)
+        return out(1, 0, 0, a);
     const Eigen::Vector3d bp = p - b;
     const double d3 = ab.dot(bp);
     const double d4 = ac.dot(bp);
-    if (d3 >= 0.0 && d4 <= d3) return out(0, 1, 0, b);
+    if (d3 >= 0.0 && d4 <= d3)
+        return out(0, 1, 0, b);
     const double vc = d1 * d4 - d3 * d2;
     if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) {
         const double v = d1 / (d1 - d3);
@@ -33,7 +36,8 @@ Eigen::Vector3d closestPointOnTriangle(const Eigen::Vector3d& p, const Eigen::Ve
     const Eigen::Vector3d cp = p - c;
     const double d5 = ab.dot(cp);
     const double d6 = ac.dot(cp);
-    if (d6 >= 0.0 && d5 <= d6) return out(0, 0, 1, c);
+    if (d6 >= 0.0 && d5 <= d6)
+        return out(0, 0, 1, c);
     const double vb = d5 * d2 - d1 * d6;
     if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) {
         const double w = d2 / (d2 - d6);
@@ -74,7 +78,8 @@ TriangleGrid::TriangleGrid(const TriangleMesh& mesh) : m_mesh(&mesh)
         const Eigen::Vector3i c1 = cellOf(a.cwiseMax(b).cwiseMax(c));
         for (int z = c0.z(); z <= c1.z(); ++z)
             for (int y = c0.y(); y <= c1.y(); ++y)
-                for (int x = c0.x(); x <= c1.x(); ++x) visit(cellIndex(x, y, z));
+                for (int x = c0.x(); x <= c1.x(); ++x)
+                    visit(cellIndex(x, y, z));
     };
     for (const auto& t : mesh.triangles) {
         forEachCell(t, [&](int cell) { ++counts[static_cast<std::size_t>(cell) + 1]; });
@@ -85,8 +90,9 @@ TriangleGrid::TriangleGrid(const TriangleMesh& mesh) : m_mesh(&mesh)
     m_cellStart = counts;
     m_cellTriangles.resize(static_cast<std::size_t>(counts.back()));
     for (int ti = 0; ti < static_cast<int>(mesh.triangles.size()); ++ti) {
-        forEachCell(mesh.triangles[static_cast<std::size_t>(ti)],
-                    [&](int cell) { m_cellTriangles[static_cast<std::size_t>(counts[static_cast<std::size_t>(cell)]++)] = ti; });
+        forEachCell(mesh.triangles[static_cast<std::size_t>(ti)], [&](int cell) {
+            m_cellTriangles[static_cast<std::size_t>(counts[static_cast<std::size_t>(cell)]++)] = ti;
+        });
     }
 }
 
@@ -113,14 +119,21 @@ void TriangleGrid::nearest(const Eigen::Vector3d& p, double slack, std::vector<C
         for (int z = home.z() - k; z <= home.z() + k; ++z) {
             for (int y = home.y() - k; y <= home.y() + k; ++y) {
                 for (int x = home.x() - k; x <= home.x() + k; ++x) {
-                    if (std::max({std::abs(x - home.x()), std::abs(y - home.y()), std::abs(z - home.z())}) != k) continue;
-                    if (x < 0 || y < 0 || z < 0 || x >= m_dims.x() || y >= m_dims.y() || z >= m_dims.z()) continue;
+                    if (std::max({std::abs(x - home.x()), std::abs(y - home.y()), std::abs(z - home.z())}) !=
+                        k)
+                        continue;
+                    if (x < 0 || y < 0 || z < 0 || x >= m_dims.x() || y >= m_dims.y() || z >= m_dims.z())
+                        continue;
                     const int cell = cellIndex(x, y, z);
-                    for (int i = m_cellStart[static_cast<std::size_t>(cell)]; i < m_cellStart[static_cast<std::size_t>(cell) + 1]; ++i) {
+                    for (int i = m_cellStart[static_cast<std::size_t>(cell)];
+                         i < m_cellStart[static_cast<std::size_t>(cell) + 1]; ++i) {
                         const int ti = m_cellTriangles[static_cast<std::size_t>(i)];
                         const auto& t = mesh.triangles[static_cast<std::size_t>(ti)];
-                        const double d = (closestPointOnTriangle(p, mesh.vertices.col(t[0]), mesh.vertices.col(t[1]),
-                                                                 mesh.vertices.col(t[2]), nullptr) - p).norm();
+                        const double d =
+                            (closestPointOnTriangle(p, mesh.vertices.col(t[0]), mesh.vertices.col(t[1]),
+                                                    mesh.vertices.col(t[2]), nullptr) -
+                             p)
+                                .norm();
                         best = std::min(best, d);
                         if (d <= best + slack) {
                             out.push_back({ti, d});
@@ -133,12 +146,14 @@ void TriangleGrid::nearest(const Eigen::Vector3d& p, double slack, std::vector<C
             break;
         }
     }
-    const auto cut = std::remove_if(out.begin(), out.end(), [&](const Candidate& c) { return c.distance > best + slack; });
+    const auto cut =
+        std::remove_if(out.begin(), out.end(), [&](const Candidate& c) { return c.distance > best + slack; });
     out.erase(cut, out.end());
     std::sort(out.begin(), out.end(), [](const Candidate& a, const Candidate& b) {
         return a.distance < b.distance || (a.distance == b.distance && a.triangle < b.triangle);
     });
-    out.erase(std::unique(out.begin(), out.end(), [](const Candidate& a, const Candidate& b) { return a.triangle == b.triangle; }),
+    out.erase(std::unique(out.begin(), out.end(),
+                          [](const Candidate& a, const Candidate& b) { return a.triangle == b.triangle; }),
               out.end());
 }
 

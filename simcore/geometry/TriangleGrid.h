@@ -16,8 +16,9 @@
 namespace colonosim::geometry {
 
 /// Closest point of triangle (a, b, c) to p, with its barycentric coordinates.
-Eigen::Vector3d closestPointOnTriangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
-                                       const Eigen::Vector3d& c, Eigen::Vector3d* barycentric);
+Eigen::Vector3d closestPointOnTriangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
+                                       const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+                                       Eigen::Vector3d* barycentric);
 
 class TriangleGrid {
 public:

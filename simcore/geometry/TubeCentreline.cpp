@@ -33,7 +33,8 @@ EdgeGraph buildGraph(const TriangleMesh& mesh)
     for (const auto& t : mesh.triangles) {
         for (std::size_t k = 0; k < 3; ++k) {
             const int a = t[k], b = t[(k + 1) % 3];
-            if (a != b) halfEdges.emplace_back(std::min(a, b), std::max(a, b));
+            if (a != b)
+                halfEdges.emplace_back(std::min(a, b), std::max(a, b));
         }
     }
     std::sort(halfEdges.begin(), halfEdges.end());
@@ -41,9 +42,11 @@ EdgeGraph buildGraph(const TriangleMesh& mesh)
     std::vector<std::pair<int, int>> edges;
     for (std::size_t i = 0; i < halfEdges.size();) {
         std::size_t j = i;
-        while (j < halfEdges.size() && halfEdges[j] == halfEdges[i]) ++j;
+        while (j < halfEdges.size() && halfEdges[j] == halfEdges[i])
+            ++j;
         edges.push_back(halfEdges[i]);
-        if (j - i == 1) g.boundary.push_back(halfEdges[i]);
+        if (j - i == 1)
+            g.boundary.push_back(halfEdges[i]);
         i = j;
     }
     g.offset.assign(numV + 1, 0);
@@ -51,7 +54,8 @@ EdgeGraph buildGraph(const TriangleMesh& mesh)
         ++g.offset[static_cast<std::size_t>(a) + 1];
         ++g.offset[static_cast<std::size_t>(b) + 1];
     }
-    for (std::size_t v = 0; v < numV; ++v) g.offset[v + 1] += g.offset[v];
+    for (std::size_t v = 0; v < numV; ++v)
+        g.offset[v + 1] += g.offset[v];
     g.neighbour.resize(2 * edges.size());
     g.length.resize(2 * edges.size());
     std::vector<int> fill(g.offset.begin(), g.offset.end() - 1);
@@ -83,8 +87,10 @@ std::vector<double> geodesic(const EdgeGraph& g, const std::vector<int>& sources
     while (!queue.empty()) {
         const auto [d, v] = queue.top();
         queue.pop();
-        if (d > dist[static_cast<std::size_t>(v)]) continue;
-        for (int e = g.offset[static_cast<std::size_t>(v)]; e < g.offset[static_cast<std::size_t>(v) + 1]; ++e) {
+        if (d > dist[static_cast<std::size_t>(v)])
+            continue;
+        for (int e = g.offset[static_cast<std::size_t>(v)]; e < g.offset[static_cast<std::size_t>(v) + 1];
+             ++e) {
             const auto w = static_cast<std::size_t>(g.neighbour[static_cast<std::size_t>(e)]);
             const double dw = d + g.length[static_cast<std::size_t>(e)];
             if (dw < dist[w]) {
@@ -120,7 +126,8 @@ std::vector<std::vector<int>> boundaryLoops(const EdgeGraph& g, std::size_t numV
     std::vector<char> used(numV, 0);
     std::vector<std::vector<int>> loops;
     for (std::size_t start = 0; start < numV; ++start) {
-        if (link[start].empty() || used[start] != 0) continue;
+        if (link[start].empty() || used[start] != 0)
+            continue;
         std::vector<int> loop;
         std::vector<int> stack{static_cast<int>(start)};
         used[start] = 1;
@@ -137,35 +144,39 @@ std::vector<std::vector<int>> boundaryLoops(const EdgeGraph& g, std::size_t numV
         }
         loops.push_back(std::move(loop));
     }
-    std::stable_sort(loops.begin(), loops.end(), [](const auto& a, const auto& b) { return a.size() > b.size(); });
+    std::stable_sort(loops.begin(), loops.end(),
+                     [](const auto& a, const auto& b) { return a.size() > b.size(); });
     return loops;
 }
 
 Eigen::Vector3d centroid(const TriangleMesh& mesh, const std::vector<int>& vertices)
 {
     Eigen::Vector3d c = Eigen::Vector3d::Zero();
-    for (int v : vertices) c += mesh.vertices.col(v);
+    for (int v : vertices)
+        c += mesh.vertices.col(v);
     return c / static_cast<double>(std::max<std::size_t>(1, vertices.size()));
 }
 
 double meanDistance(const TriangleMesh& mesh, const std::vector<int>& vertices, const Eigen::Vector3d& c)
 {
     double sum = 0.0;
-    for (int v : vertices) sum += (mesh.vertices.col(v) - c).norm();
+    for (int v : vertices)
+        sum += (mesh.vertices.col(v) - c).norm();
     return sum / static_cast<double>(std::max<std::size_t>(1, vertices.size()));
 }
 
 /// One cross-section: the iso-contour of a scalar field at one level.
 struct Section {
     Eigen::Vector3d centre = Eigen::Vector3d::Zero();  ///< length-weighted centroid of the contour
-    double radius = 0.0;                              ///< length-weighted mean distance of the contour from the centre
+    double radius = 0.0;  ///< length-weighted mean distance of the contour from the centre
     double contourLength = 0.0;
 };
 
 /// Iso-contours of the piecewise-linear `field` at levels first + k step,
 /// k = 0..count-1 (marching triangles). Each triangle visits only the levels
 /// inside its value range, so the cost is O(F + number of contour segments).
-std::vector<Section> levelSets(const TriangleMesh& mesh, const std::vector<double>& field, double first, double step, int count)
+std::vector<Section> levelSets(const TriangleMesh& mesh, const std::vector<double>& field, double first,
+                               double step, int count)
 {
     struct Piece {
         int level;
@@ -174,13 +185,16 @@ std::vector<Section> levelSets(const TriangleMesh& mesh, const std::vector<doubl
     std::vector<Piece> pieces;
     std::vector<Section> sections(static_cast<std::size_t>(count));
     for (const auto& t : mesh.triangles) {
-        const double f[3] = {field[static_cast<std::size_t>(t[0])], field[static_cast<std::size_t>(t[1])], field[static_cast<std::size_t>(t[2])]};
-        if (!std::isfinite(f[0]) || !std::isfinite(f[1]) || !std::isfinite(f[2])) continue;
+        const double f[3] = {field[static_cast<std::size_t>(t[0])], field[static_cast<std::size_t>(t[1])],
+                             field[static_cast<std::size_t>(t[2])]};
+        if (!std::isfinite(f[0]) || !std::isfinite(f[1]) || !std::isfinite(f[2]))
+            continue;
         const double lo = std::min({f[0], f[1], f[2]});
         const double hi = std::max({f[0], f[1], f[2]});
         // Levels l with lo < l <= hi: vertices with f >= l are "above".
         int k0 = std::max(0, static_cast<int>(std::ceil((lo - first) / step)));
-        if (first + k0 * step <= lo) ++k0;
+        if (first + k0 * step <= lo)
+            ++k0;
         const int k1 = std::min(count - 1, static_cast<int>(std::floor((hi - first) / step)));
         for (int k = k0; k <= k1; ++k) {
             const double level = first + k * step;
@@ -193,7 +207,8 @@ std::vector<Section> levelSets(const TriangleMesh& mesh, const std::vector<doubl
                     ends[n++] = (1.0 - u) * mesh.vertices.col(t[e]) + u * mesh.vertices.col(t[e1]);
                 }
             }
-            if (n < 2) continue;
+            if (n < 2)
+                continue;
             const double len = (ends[1] - ends[0]).norm();
             Section& s = sections[static_cast<std::size_t>(k)];
             s.centre += 0.5 * len * (ends[0] + ends[1]);
@@ -202,7 +217,8 @@ std::vector<Section> levelSets(const TriangleMesh& mesh, const std::vector<doubl
         }
     }
     for (Section& s : sections) {
-        if (s.contourLength > 0.0) s.centre /= s.contourLength;
+        if (s.contourLength > 0.0)
+            s.centre /= s.contourLength;
     }
     for (const Piece& piece : pieces) {
         Section& s = sections[static_cast<std::size_t>(piece.level)];
@@ -210,7 +226,8 @@ std::vector<Section> levelSets(const TriangleMesh& mesh, const std::vector<doubl
         s.radius += 0.5 * len * ((piece.p - s.centre).norm() + (piece.q - s.centre).norm());
     }
     for (Section& s : sections) {
-        if (s.contourLength > 0.0) s.radius /= s.contourLength;
+        if (s.contourLength > 0.0)
+            s.radius /= s.contourLength;
     }
     return sections;
 }
@@ -218,16 +235,20 @@ std::vector<Section> levelSets(const TriangleMesh& mesh, const std::vector<doubl
 std::vector<double> cumulative(const std::vector<Eigen::Vector3d>& p)
 {
     std::vector<double> c(p.size(), 0.0);
-    for (std::size_t i = 1; i < p.size(); ++i) c[i] = c[i - 1] + (p[i] - p[i - 1]).norm();
+    for (std::size_t i = 1; i < p.size(); ++i)
+        c[i] = c[i - 1] + (p[i] - p[i - 1]).norm();
     return c;
 }
 
 /// Linear interpolation of y(x) at `x` (x ascending; clamped at the ends).
 double interpolate(const std::vector<double>& xs, const std::vector<double>& ys, double x)
 {
-    if (xs.empty()) return 0.0;
-    if (x <= xs.front()) return ys.front();
-    if (x >= xs.back()) return ys.back();
+    if (xs.empty())
+        return 0.0;
+    if (x <= xs.front())
+        return ys.front();
+    if (x >= xs.back())
+        return ys.back();
     const auto i = static_cast<std::size_t>(std::upper_bound(xs.begin(), xs.end(), x) - xs.begin());
     const double span = xs[i] - xs[i - 1];
     const double u = span > 0.0 ? (x - xs[i - 1]) / span : 0.0;
@@ -251,8 +272,8 @@ struct End {
 
 /// Axis from the sections of `field` (range [0, total]), between the two ends.
 /// `levelOf` receives the field value of each axis point.
-Axis axisFromSections(const TriangleMesh& mesh, const std::vector<double>& field, double total, double spacing, const End& start,
-                      const End& end, std::vector<double>* levelOf)
+Axis axisFromSections(const TriangleMesh& mesh, const std::vector<double>& field, double total,
+                      double spacing, const End& start, const End& end, std::vector<double>* levelOf)
 {
     const int count = std::max(4, static_cast<int>(std::lround(total / spacing)));
     const double step = total / count;
@@ -263,7 +284,8 @@ Axis axisFromSections(const TriangleMesh& mesh, const std::vector<double>& field
     axis.radius.push_back(start.radius);
     levelOf->push_back(0.0);
     for (std::size_t k = 0; k < sections.size(); ++k) {
-        if (sections[k].contourLength <= 0.0) continue;
+        if (sections[k].contourLength <= 0.0)
+            continue;
         axis.points.push_back(sections[k].centre);
         axis.radius.push_back(sections[k].radius);
         levelOf->push_back((static_cast<double>(k) + 0.5) * step);
@@ -271,11 +293,14 @@ Axis axisFromSections(const TriangleMesh& mesh, const std::vector<double>& field
     axis.points.push_back(end.point);
     axis.radius.push_back(end.radius);
     levelOf->push_back(total);
-    if (!start.open && axis.radius.size() > 2) axis.radius.front() = axis.radius[1];
-    if (!end.open && axis.radius.size() > 2) axis.radius.back() = axis.radius[axis.radius.size() - 2];
+    if (!start.open && axis.radius.size() > 2)
+        axis.radius.front() = axis.radius[1];
+    if (!end.open && axis.radius.size() > 2)
+        axis.radius.back() = axis.radius[axis.radius.size() - 2];
     // Light smoothing (ends fixed): the sections are already smooth.
     std::vector<Eigen::Vector3d> q = axis.points;
-    for (std::size_t i = 1; i + 1 < q.size(); ++i) q[i] = 0.25 * axis.points[i - 1] + 0.5 * axis.points[i] + 0.25 * axis.points[i + 1];
+    for (std::size_t i = 1; i + 1 < q.size(); ++i)
+        q[i] = 0.25 * axis.points[i - 1] + 0.5 * axis.points[i] + 0.25 * axis.points[i + 1];
     axis.points = q;
     return axis;
 }
@@ -288,12 +313,17 @@ void projectLocally(const TriangleMesh& mesh, const Axis& axis, std::vector<doub
 {
     const std::vector<double> cum = cumulative(axis.points);
     for (std::size_t v = 0; v < s.size(); ++v) {
-        if (!std::isfinite(s[v])) continue;
+        if (!std::isfinite(s[v]))
+            continue;
         const Eigen::Vector3d p = mesh.vertices.col(static_cast<Eigen::Index>(v));
         const double r = interpolate(cum, axis.radius, s[v]);
-        const double window = 3.0 * r + 2.0 * (cum.back() / static_cast<double>(std::max<std::size_t>(1, cum.size() - 1)));
-        const auto lo = static_cast<std::size_t>(std::max<std::ptrdiff_t>(0, (std::lower_bound(cum.begin(), cum.end(), s[v] - window) - cum.begin()) - 1));
-        const auto hi = std::min(cum.size() - 1, static_cast<std::size_t>(std::upper_bound(cum.begin(), cum.end(), s[v] + window) - cum.begin()));
+        const double window =
+            3.0 * r + 2.0 * (cum.back() / static_cast<double>(std::max<std::size_t>(1, cum.size() - 1)));
+        const auto lo = static_cast<std::size_t>(std::max<std::ptrdiff_t>(
+            0, (std::lower_bound(cum.begin(), cum.end(), s[v] - window) - cum.begin()) - 1));
+        const auto hi = std::min(
+            cum.size() - 1,
+            static_cast<std::size_t>(std::upper_bound(cum.begin(), cum.end(), s[v] + window) - cum.begin()));
         double best = kInf;
         double bestS = s[v];
         for (std::size_t i = lo; i < hi; ++i) {
@@ -321,7 +351,8 @@ double tubeRadiusNearEnd(const std::vector<double>& fromEnd, const std::vector<d
     double peak = 0.0;
     for (std::size_t i = 0; i < fromEnd.size(); ++i) {
         peak = std::max(peak, radius[i]);
-        if (i > 2 && fromEnd[i] > 3.0 * peak) break;
+        if (i > 2 && fromEnd[i] > 3.0 * peak)
+            break;
     }
     return peak;
 }
@@ -335,7 +366,8 @@ double capLength(const std::vector<double>& fromEnd, const std::vector<double>& 
     const double threshold = 0.9 * tubeRadiusNearEnd(fromEnd, radius);
     for (std::size_t k = 0; k < fromEnd.size(); ++k) {
         if (radius[k] >= threshold) {
-            if (k == 0) return 0.0;
+            if (k == 0)
+                return 0.0;
             const double u = (threshold - radius[k - 1]) / (radius[k] - radius[k - 1]);
             return fromEnd[k - 1] + std::clamp(u, 0.0, 1.0) * (fromEnd[k] - fromEnd[k - 1]);
         }
@@ -362,8 +394,9 @@ int capApex(const TriangleMesh& mesh, const Axis& axis, const std::vector<double
     }
     const double r = tubeRadiusNearEnd(fromEnd, radius);
     const auto at = [&](double d) {
-        const auto i = static_cast<std::size_t>(std::clamp<std::ptrdiff_t>(std::upper_bound(fromEnd.begin(), fromEnd.end(), d) - fromEnd.begin(), 1,
-                                                                            static_cast<std::ptrdiff_t>(fromEnd.size()) - 1));
+        const auto i = static_cast<std::size_t>(
+            std::clamp<std::ptrdiff_t>(std::upper_bound(fromEnd.begin(), fromEnd.end(), d) - fromEnd.begin(),
+                                       1, static_cast<std::ptrdiff_t>(fromEnd.size()) - 1));
         const double span = fromEnd[i] - fromEnd[i - 1];
         const double u = span > 0.0 ? std::clamp((d - fromEnd[i - 1]) / span, 0.0, 1.0) : 0.0;
         return Eigen::Vector3d((1.0 - u) * points[i - 1] + u * points[i]);
@@ -373,8 +406,10 @@ int capApex(const TriangleMesh& mesh, const Axis& axis, const std::vector<double
     int best = -1;
     double farthest = -kInf;
     for (std::size_t v = 0; v < s.size(); ++v) {
-        if (!std::isfinite(s[v])) continue;
-        if ((atEnd ? length - s[v] : s[v]) > 2.0 * r) continue;
+        if (!std::isfinite(s[v]))
+            continue;
+        if ((atEnd ? length - s[v] : s[v]) > 2.0 * r)
+            continue;
         const double along = (mesh.vertices.col(static_cast<Eigen::Index>(v)) - base).dot(direction);
         if (along > farthest) {
             farthest = along;
@@ -430,7 +465,8 @@ Centreline computeCentreline(const TriangleMesh& mesh)
         }
         const std::vector<double> g1 = geodesic(graph, farSources);
         double total = 0.0;
-        for (int v : farSources) total += g0[static_cast<std::size_t>(v)];
+        for (int v : farSources)
+            total += g0[static_cast<std::size_t>(v)];
         total /= static_cast<double>(farSources.size());
         for (std::size_t v = 0; v < numV; ++v) {
             const double sum = g0[v] + g1[v];
@@ -440,7 +476,8 @@ Centreline computeCentreline(const TriangleMesh& mesh)
         // From level to arc length along the axis.
         const std::vector<double> cum = cumulative(axis.points);
         for (double& sv : s) {
-            if (std::isfinite(sv)) sv = interpolate(levelOf, cum, sv);
+            if (std::isfinite(sv))
+                sv = interpolate(levelOf, cum, sv);
         }
     };
     slice();
@@ -497,15 +534,17 @@ Centreline computeCentreline(const TriangleMesh& mesh)
     std::vector<Eigen::Vector3d> polyline;
     std::vector<double> polylineS, polylineR;
     const auto pointAt = [&](double at) {
-        const auto i = static_cast<std::size_t>(std::clamp<std::ptrdiff_t>(std::upper_bound(cum.begin(), cum.end(), at) - cum.begin(), 1,
-                                                                            static_cast<std::ptrdiff_t>(cum.size()) - 1));
+        const auto i = static_cast<std::size_t>(
+            std::clamp<std::ptrdiff_t>(std::upper_bound(cum.begin(), cum.end(), at) - cum.begin(), 1,
+                                       static_cast<std::ptrdiff_t>(cum.size()) - 1));
         const double span = cum[i] - cum[i - 1];
         const double u = span > 0.0 ? std::clamp((at - cum[i - 1]) / span, 0.0, 1.0) : 0.0;
         return Eigen::Vector3d((1.0 - u) * axis.points[i - 1] + u * axis.points[i]);
     };
     polyline.push_back(pointAt(from));
     for (std::size_t i = 0; i < axis.points.size(); ++i) {
-        if (cum[i] > from && cum[i] < to) polyline.push_back(axis.points[i]);
+        if (cum[i] > from && cum[i] < to)
+            polyline.push_back(axis.points[i]);
     }
     polyline.push_back(pointAt(to));
     for (std::size_t i = 0; i < axis.points.size(); ++i) {
@@ -519,7 +558,8 @@ Centreline computeCentreline(const TriangleMesh& mesh)
     c.points = resampleByArcLength(polyline, std::max(2, static_cast<int>(std::ceil(length / 0.001)) + 1));
     computeArcLengthAndFrames(c, -Eigen::Vector3d::UnitY());
     c.radius.resize(c.points.size());
-    for (std::size_t i = 0; i < c.points.size(); ++i) c.radius[i] = interpolate(polylineS, polylineR, c.arcLength[i]);
+    for (std::size_t i = 0; i < c.points.size(); ++i)
+        c.radius[i] = interpolate(polylineS, polylineR, c.arcLength[i]);
 
     const AnatomyParameters defaults;
     c.segment.resize(c.points.size());
@@ -528,7 +568,8 @@ Centreline computeCentreline(const TriangleMesh& mesh)
         int seg = 0;
         for (; seg + 1 < kNumSegments; ++seg) {
             boundary += defaults.length(static_cast<Segment>(seg)) / defaults.totalLength() * length;
-            if (c.arcLength[i] < boundary) break;
+            if (c.arcLength[i] < boundary)
+                break;
         }
         c.segment[i] = static_cast<Segment>(seg);
     }

@@ -15,12 +15,25 @@ namespace colonosim::physics {
 
 struct SleepParameters {
     static constexpr params::ParameterSpec sleepSpeedSpec{
-        "sleepSpeed", "m/s", 2e-4, 1e-6, 1e-1, "speed below which a node may fall asleep",
+        "sleepSpeed",
+        "m/s",
+        2e-4,
+        1e-6,
+        1e-1,
+        "speed below which a node may fall asleep",
         "model choice; the bench reports the error it costs against the full simulation"};
-    static constexpr params::ParameterSpec wakeSpeedSpec{
-        "wakeSpeed", "m/s", 1e-3, 1e-6, 1.0, "speed of a nearby node that wakes a sleeping one",
-        "model choice; see sleepSpeed"};
-    static constexpr params::ParameterSpec quietTimeSpec{"quietTime", "s", 0.05, 1e-3, 10.0,
+    static constexpr params::ParameterSpec wakeSpeedSpec{"wakeSpeed",
+                                                         "m/s",
+                                                         1e-3,
+                                                         1e-6,
+                                                         1.0,
+                                                         "speed of a nearby node that wakes a sleeping one",
+                                                         "model choice; see sleepSpeed"};
+    static constexpr params::ParameterSpec quietTimeSpec{"quietTime",
+                                                         "s",
+                                                         0.05,
+                                                         1e-3,
+                                                         10.0,
                                                          "time a node must stay slow before sleeping",
                                                          "model choice; see sleepSpeed"};
 

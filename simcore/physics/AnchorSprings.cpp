@@ -7,8 +7,8 @@ namespace colonosim::physics {
 
 int AnchorSprings::add(int node, const Eigen::Vector3d& anchor, double stiffness, double damping)
 {
-    if (node < 0 || !anchor.allFinite() || !(stiffness >= 0.0) || !(damping >= 0.0) || !std::isfinite(stiffness) ||
-        !std::isfinite(damping)) {
+    if (node < 0 || !anchor.allFinite() || !(stiffness >= 0.0) || !(damping >= 0.0) ||
+        !std::isfinite(stiffness) || !std::isfinite(damping)) {
         throw std::invalid_argument("AnchorSprings::add: invalid node, anchor, stiffness or damping");
     }
     m_node.push_back(node);
@@ -48,7 +48,8 @@ void AnchorSprings::addDampingProduct(const Positions& /*x*/, const Eigen::Matri
     }
 }
 
-void AnchorSprings::addStiffnessBound(const Positions& /*x*/, Eigen::VectorXd& kRow, Eigen::VectorXd& cRow) const
+void AnchorSprings::addStiffnessBound(const Positions& /*x*/, Eigen::VectorXd& kRow,
+                                      Eigen::VectorXd& cRow) const
 {
     for (size_t a = 0; a < m_node.size(); ++a) {
         kRow[m_node[a]] += m_k[a];

@@ -24,7 +24,8 @@ double dotMasked(const std::vector<int>& nodes, const Eigen::Matrix3Xd& a, const
 }
 }  // namespace
 
-void BackwardEuler::applySystem(const TissueBody& body, double h, const Eigen::Matrix3Xd& y, Eigen::Matrix3Xd& out)
+void BackwardEuler::applySystem(const TissueBody& body, double h, const Eigen::Matrix3Xd& y,
+                                Eigen::Matrix3Xd& out)
 {
     body.stiffnessProduct(body.positions(), y, m_kTmp, true);
     body.dampingProduct(body.positions(), y, m_dTmp);

@@ -58,7 +58,8 @@ ColonBody buildColonBody(const ColonAnatomy& anatomy, const TissueParameters& ti
     std::vector<Eigen::Vector3d> axis(static_cast<size_t>(n));
     std::vector<double> radius(static_cast<size_t>(n));
     for (int i = 0; i < n; ++i) {
-        const size_t sample = sampleAt(anatomy.centreline, anatomy.physicsNodes[static_cast<size_t>(i)].arcLength);
+        const size_t sample =
+            sampleAt(anatomy.centreline, anatomy.physicsNodes[static_cast<size_t>(i)].arcLength);
         axis[static_cast<size_t>(i)] = anatomy.centreline.tangents[sample];
         radius[static_cast<size_t>(i)] = anatomy.centreline.radius[sample];
     }
@@ -107,10 +108,11 @@ ColonBody buildColonBody(const ColonAnatomy& anatomy, const TissueParameters& ti
     auto adhesions = std::make_unique<AnchorSprings>("adhesions");
     for (const int node : options.adhesionNodes) {
         if (node < 0 || node >= n) {
-            throw std::invalid_argument("buildColonBody: adhesion node " + std::to_string(node) + " is not in [0, " +
-                                        std::to_string(n - 1) + "]");
+            throw std::invalid_argument("buildColonBody: adhesion node " + std::to_string(node) +
+                                        " is not in [0, " + std::to_string(n - 1) + "]");
         }
-        adhesions->add(node, mesh.vertices.col(node), tissue.adhesionStiffness, beta * tissue.adhesionStiffness);
+        adhesions->add(node, mesh.vertices.col(node), tissue.adhesionStiffness,
+                       beta * tissue.adhesionStiffness);
     }
     colon.adhesions = static_cast<AnchorSprings*>(&body.addForceTerm(std::move(adhesions)));
 
@@ -118,8 +120,8 @@ ColonBody buildColonBody(const ColonAnatomy& anatomy, const TissueParameters& ti
         body.addForceTerm(std::make_unique<ViscousDrag>(mass, tissue.surroundingDampingRate));
     }
     if (options.withGravity && environment.gravity > 0.0) {
-        body.addForceTerm(
-            std::make_unique<Gravity>(mass, environment.gravity * downDirection(environment.patientPosition)));
+        body.addForceTerm(std::make_unique<Gravity>(mass, environment.gravity *
+                                                              downDirection(environment.patientPosition)));
     }
     if (options.withInsufflation) {
         colon.insufflation = static_cast<InsufflationPressure*>(&body.addForceTerm(

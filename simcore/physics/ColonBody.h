@@ -59,13 +59,16 @@ struct ColonBodyOptions {
 /// Validates the parameters (throws ParameterError) and builds the body.
 [[nodiscard]] ColonBody buildColonBody(const geometry::ColonAnatomy& anatomy, const TissueParameters& tissue,
                                        const EnvironmentParameters& environment,
-                                       const StiffnessCalibration& calibration, const ColonBodyOptions& options = {});
+                                       const StiffnessCalibration& calibration,
+                                       const ColonBodyOptions& options = {});
 
 /// Wall springs and masses only (no fixations or environment), for a mesh
 /// whose local axis at each vertex is `axis` (unit); used by the builder and
 /// by the calibration on a straight tube.
 void addWallSprings(const geometry::TriangleMesh& mesh, const std::vector<Eigen::Vector3d>& axis,
-                    const TissueParameters& tissue, const StiffnessCalibration& calibration, SpringSet& springs);
-[[nodiscard]] Eigen::VectorXd wallNodeMasses(const geometry::TriangleMesh& mesh, const TissueParameters& tissue);
+                    const TissueParameters& tissue, const StiffnessCalibration& calibration,
+                    SpringSet& springs);
+[[nodiscard]] Eigen::VectorXd wallNodeMasses(const geometry::TriangleMesh& mesh,
+                                             const TissueParameters& tissue);
 
 }  // namespace colonosim::physics

@@ -39,7 +39,8 @@ public:
         addDampingForce(x, v, f);
     }
     /// df += K(x) dx with K = d(elastic force)/dx.
-    virtual void addStiffnessProduct(const Positions& x, const Eigen::Matrix3Xd& dx, Eigen::Matrix3Xd& df) const = 0;
+    virtual void addStiffnessProduct(const Positions& x, const Eigen::Matrix3Xd& dx,
+                                     Eigen::Matrix3Xd& df) const = 0;
     /// df += K+(x) dx, a negative semi-definite version of K for the implicit
     /// solve (e.g. compressed springs lose their transverse term, Choi & Ko
     /// 2002). Defaults to the exact product.
@@ -49,11 +50,13 @@ public:
         addStiffnessProduct(x, dx, df);
     }
     /// df += D(x) dv with D = d(damping force)/dv.
-    virtual void addDampingProduct(const Positions& x, const Eigen::Matrix3Xd& dv, Eigen::Matrix3Xd& df) const = 0;
+    virtual void addDampingProduct(const Positions& x, const Eigen::Matrix3Xd& dv,
+                                   Eigen::Matrix3Xd& df) const = 0;
     /// kRow(i) += sum over j of ||K_ij|| at state x, or at the worst state
     /// the term declares where that is tighter to state (a stiffening
     /// mesentery at its declared maximum stretch); cRow(i) likewise for D.
-    virtual void addStiffnessBound(const Positions& x, Eigen::VectorXd& kRow, Eigen::VectorXd& cRow) const = 0;
+    virtual void addStiffnessBound(const Positions& x, Eigen::VectorXd& kRow,
+                                   Eigen::VectorXd& cRow) const = 0;
     /// Potential energy of the elastic part, J (0 for non-conservative terms).
     [[nodiscard]] virtual double potentialEnergy(const Positions& x) const = 0;
     /// True when K and D are symmetric, so the implicit solver may include

@@ -30,8 +30,8 @@ std::string_view patientPositionName(PatientPosition position)
 
 PatientPosition parsePatientPosition(std::string_view text)
 {
-    for (const PatientPosition p : {PatientPosition::Supine, PatientPosition::Prone, PatientPosition::LeftLateral,
-                                    PatientPosition::RightLateral}) {
+    for (const PatientPosition p : {PatientPosition::Supine, PatientPosition::Prone,
+                                    PatientPosition::LeftLateral, PatientPosition::RightLateral}) {
         if (patientPositionName(p) == text) {
             return p;
         }

@@ -25,8 +25,7 @@ public:
     /// `masses` (kg) is copied; g in m/s^2.
     Gravity(const Eigen::VectorXd& masses, const Eigen::Vector3d& acceleration)
         : m_mass(masses), m_g(acceleration)
-    {
-    }
+    {}
 
     [[nodiscard]] std::string_view name() const override { return "gravity"; }
     void addForce(const Positions& x, Forces& f) const override;

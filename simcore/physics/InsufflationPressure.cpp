@@ -67,8 +67,8 @@ void InsufflationPressure::onActiveSetChanged(const std::vector<std::uint8_t>& a
     m_active.clear();
     for (size_t t = 0; t < m_triangles.size(); ++t) {
         const auto& tri = m_triangles[t];
-        const bool any = awake.empty() || awake[static_cast<size_t>(tri[0])] || awake[static_cast<size_t>(tri[1])] ||
-                         awake[static_cast<size_t>(tri[2])];
+        const bool any = awake.empty() || awake[static_cast<size_t>(tri[0])] ||
+                         awake[static_cast<size_t>(tri[1])] || awake[static_cast<size_t>(tri[2])];
         if (any) {
             m_active.push_back(static_cast<int>(t));
         }

@@ -25,7 +25,8 @@ public:
     [[nodiscard]] std::string_view name() const override { return "insufflation"; }
     void addForce(const Positions& x, Forces& f) const override;
     void addDampingForce(const Positions&, const Velocities&, Forces&) const override {}
-    void addStiffnessProduct(const Positions& x, const Eigen::Matrix3Xd& dx, Eigen::Matrix3Xd& df) const override;
+    void addStiffnessProduct(const Positions& x, const Eigen::Matrix3Xd& dx,
+                             Eigen::Matrix3Xd& df) const override;
     void addDampingProduct(const Positions&, const Eigen::Matrix3Xd&, Eigen::Matrix3Xd&) const override {}
     void addStiffnessBound(const Positions& x, Eigen::VectorXd& kRow, Eigen::VectorXd& cRow) const override;
     [[nodiscard]] double potentialEnergy(const Positions&) const override { return 0.0; }

@@ -20,8 +20,9 @@
 namespace colonosim::physics {
 
 enum class IntegratorKind { ExplicitEuler, SymplecticEuler, RungeKutta4, BackwardEuler };
-inline constexpr IntegratorKind kAllIntegrators[] = {IntegratorKind::ExplicitEuler, IntegratorKind::SymplecticEuler,
-                                                     IntegratorKind::RungeKutta4, IntegratorKind::BackwardEuler};
+inline constexpr IntegratorKind kAllIntegrators[] = {
+    IntegratorKind::ExplicitEuler, IntegratorKind::SymplecticEuler, IntegratorKind::RungeKutta4,
+    IntegratorKind::BackwardEuler};
 
 [[nodiscard]] std::string_view integratorName(IntegratorKind kind);
 /// Parses "explicit_euler", "symplectic_euler", "rk4", "backward_euler";

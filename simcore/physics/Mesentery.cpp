@@ -7,8 +7,8 @@ namespace colonosim::physics {
 
 int Mesentery::add(int node, const Eigen::Vector3d& root, double restLength, const Law& law)
 {
-    if (node < 0 || !root.allFinite() || !(restLength > 0.0) || !(law.stiffness >= 0.0) || !(law.damping >= 0.0) ||
-        !(law.stiffeningStrain > 0.0) || !(law.maxStrain > 0.0)) {
+    if (node < 0 || !root.allFinite() || !(restLength > 0.0) || !(law.stiffness >= 0.0) ||
+        !(law.damping >= 0.0) || !(law.stiffeningStrain > 0.0) || !(law.maxStrain > 0.0)) {
         throw std::invalid_argument("Mesentery::add: invalid tether");
     }
     m_node.push_back(node);
@@ -74,7 +74,8 @@ void Mesentery::addDampingForce(const Positions& x, const Velocities& v, Forces&
     }
 }
 
-void Mesentery::addStiffnessProduct(const Positions& x, const Eigen::Matrix3Xd& dx, Eigen::Matrix3Xd& df) const
+void Mesentery::addStiffnessProduct(const Positions& x, const Eigen::Matrix3Xd& dx,
+                                    Eigen::Matrix3Xd& df) const
 {
     for (size_t t = 0; t < m_node.size(); ++t) {
         const Eigen::Vector3d d = x.col(m_node[t]) - m_root[t];

@@ -22,10 +22,10 @@ namespace colonosim::physics {
 class Mesentery final : public ForceTerm {
 public:
     struct Law {
-        double stiffness = 0.0;        ///< k, N/m (small-strain)
-        double damping = 0.0;          ///< c, N s/m (while taut)
-        double stiffeningStrain = 0.3; ///< eps_s, 1
-        double maxStrain = 0.77;       ///< eps_max, 1
+        double stiffness = 0.0;         ///< k, N/m (small-strain)
+        double damping = 0.0;           ///< c, N s/m (while taut)
+        double stiffeningStrain = 0.3;  ///< eps_s, 1
+        double maxStrain = 0.77;        ///< eps_max, 1
     };
 
     int add(int node, const Eigen::Vector3d& root, double restLength, const Law& law);
@@ -40,8 +40,10 @@ public:
     [[nodiscard]] std::string_view name() const override { return "mesentery"; }
     void addForce(const Positions& x, Forces& f) const override;
     void addDampingForce(const Positions& x, const Velocities& v, Forces& f) const override;
-    void addStiffnessProduct(const Positions& x, const Eigen::Matrix3Xd& dx, Eigen::Matrix3Xd& df) const override;
-    void addDampingProduct(const Positions& x, const Eigen::Matrix3Xd& dv, Eigen::Matrix3Xd& df) const override;
+    void addStiffnessProduct(const Positions& x, const Eigen::Matrix3Xd& dx,
+                             Eigen::Matrix3Xd& df) const override;
+    void addDampingProduct(const Positions& x, const Eigen::Matrix3Xd& dv,
+                           Eigen::Matrix3Xd& df) const override;
     void addStiffnessBound(const Positions& x, Eigen::VectorXd& kRow, Eigen::VectorXd& cRow) const override;
     [[nodiscard]] double potentialEnergy(const Positions& x) const override;
 

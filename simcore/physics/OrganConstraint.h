@@ -26,8 +26,8 @@ public:
 private:
     struct Bounds {
         Eigen::Vector3d centre;
-        double outerRadius;  ///< sphere containing the shape, m
-        double innerRadius;  ///< sphere contained in the shape, m
+        double outerRadius;                                         ///< sphere containing the shape, m
+        double innerRadius;                                         ///< sphere contained in the shape, m
         Eigen::Vector3d inverseSemiAxes = Eigen::Vector3d::Zero();  ///< ellipsoids, 1/m
     };
     std::vector<geometry::ImplicitShape> m_shapes;

@@ -15,8 +15,8 @@ geometry::TriangleMesh makeStraightTube(const TubeResolution& tube)
     for (int r = 0; r < tube.rings; ++r) {
         for (int k = 0; k < n; ++k) {
             const double theta = 2.0 * std::numbers::pi * k / n;
-            mesh.vertices.col(r * n + k) =
-                Eigen::Vector3d(tube.radius * std::cos(theta), tube.radius * std::sin(theta), r * tube.ringSpacing);
+            mesh.vertices.col(r * n + k) = Eigen::Vector3d(
+                tube.radius * std::cos(theta), tube.radius * std::sin(theta), r * tube.ringSpacing);
         }
     }
     for (int r = 0; r + 1 < tube.rings; ++r) {
@@ -38,10 +38,12 @@ struct TubeBody {
     geometry::TriangleMesh mesh;
 };
 
-TubeBody makeTubeBody(const TubeResolution& tube, const TissueParameters& tissue, const StiffnessCalibration& factors)
+TubeBody makeTubeBody(const TubeResolution& tube, const TissueParameters& tissue,
+                      const StiffnessCalibration& factors)
 {
     geometry::TriangleMesh mesh = makeStraightTube(tube);
-    const std::vector<Eigen::Vector3d> axis(static_cast<size_t>(mesh.numVertices()), Eigen::Vector3d::UnitZ());
+    const std::vector<Eigen::Vector3d> axis(static_cast<size_t>(mesh.numVertices()),
+                                            Eigen::Vector3d::UnitZ());
     TubeBody tb{TissueBody(mesh.vertices, wallNodeMasses(mesh, tissue)), mesh};
     auto springs = std::make_unique<SpringSet>("wall");
     addWallSprings(mesh, axis, tissue, factors, *springs);
@@ -101,7 +103,8 @@ MeasuredStiffness measureTubeStiffness(const TubeResolution& tube, const TissueP
     return measured;
 }
 
-CalibrationReport calibrateWallStiffness(const TubeResolution& tube, const TissueParameters& tissue, double tolerance)
+CalibrationReport calibrateWallStiffness(const TubeResolution& tube, const TissueParameters& tissue,
+                                         double tolerance)
 {
     const double et = tissue.wallYoungModulus * tissue.wallThickness;
     CalibrationReport report;
@@ -109,7 +112,8 @@ CalibrationReport calibrateWallStiffness(const TubeResolution& tube, const Tissu
         const MeasuredStiffness m = measureTubeStiffness(tube, tissue, report.factors);
         report.axialStiffnessError = m.axial / et - 1.0;
         report.hoopStiffnessError = m.hoop / et - 1.0;
-        if (std::abs(report.axialStiffnessError) < tolerance && std::abs(report.hoopStiffnessError) < tolerance) {
+        if (std::abs(report.axialStiffnessError) < tolerance &&
+            std::abs(report.hoopStiffnessError) < tolerance) {
             break;
         }
         report.factors.axial /= 1.0 + report.axialStiffnessError;

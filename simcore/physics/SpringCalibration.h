@@ -22,8 +22,8 @@ namespace colonosim::physics {
 
 struct TubeResolution {
     int nodesPerRing = 16;
-    double radius = 0.02;       ///< m
-    double ringSpacing = 0.014; ///< m
+    double radius = 0.02;        ///< m
+    double ringSpacing = 0.014;  ///< m
     int rings = 30;
 };
 
@@ -40,12 +40,13 @@ struct MeasuredStiffness {
     double axial = 0.0;
     double hoop = 0.0;
 };
-[[nodiscard]] MeasuredStiffness measureTubeStiffness(const TubeResolution& tube, const TissueParameters& tissue,
+[[nodiscard]] MeasuredStiffness measureTubeStiffness(const TubeResolution& tube,
+                                                     const TissueParameters& tissue,
                                                      const StiffnessCalibration& factors);
 
 /// Finds the factors that make both effective stiffnesses equal E t within `tolerance`.
-[[nodiscard]] CalibrationReport calibrateWallStiffness(const TubeResolution& tube, const TissueParameters& tissue,
-                                                       double tolerance = 1e-3);
+[[nodiscard]] CalibrationReport
+calibrateWallStiffness(const TubeResolution& tube, const TissueParameters& tissue, double tolerance = 1e-3);
 
 /// A straight tube along +z, rings of `nodesPerRing`, quads split along one diagonal.
 [[nodiscard]] geometry::TriangleMesh makeStraightTube(const TubeResolution& tube);

@@ -13,7 +13,8 @@ int SpringSet::add(int i, int j, double restLength, double stiffness, double dam
     }
     if (!(restLength >= 0.0) || !(stiffness >= 0.0) || !(damping >= 0.0) || !std::isfinite(restLength) ||
         !std::isfinite(stiffness) || !std::isfinite(damping)) {
-        throw std::invalid_argument("SpringSet::add: rest length, stiffness and damping must be finite and >= 0");
+        throw std::invalid_argument(
+            "SpringSet::add: rest length, stiffness and damping must be finite and >= 0");
     }
     m_i.push_back(i);
     m_j.push_back(j);
@@ -23,7 +24,8 @@ int SpringSet::add(int i, int j, double restLength, double stiffness, double dam
     m_family.push_back(family);
     const int s = numSprings() - 1;
     const auto awake = [this](int node) {
-        return m_awake.empty() || static_cast<size_t>(node) >= m_awake.size() || m_awake[static_cast<size_t>(node)];
+        return m_awake.empty() || static_cast<size_t>(node) >= m_awake.size() ||
+               m_awake[static_cast<size_t>(node)];
     };
     if (awake(i) || awake(j)) {
         m_active.push_back(s);
@@ -132,7 +134,8 @@ void SpringSet::stiffnessProduct(const Positions& x, const Eigen::Matrix3Xd& dx,
     }
 }
 
-void SpringSet::addStiffnessProduct(const Positions& x, const Eigen::Matrix3Xd& dx, Eigen::Matrix3Xd& df) const
+void SpringSet::addStiffnessProduct(const Positions& x, const Eigen::Matrix3Xd& dx,
+                                    Eigen::Matrix3Xd& df) const
 {
     stiffnessProduct<false>(x, dx, df);
 }
@@ -169,7 +172,8 @@ void SpringSet::addStiffnessBound(const Positions& x, Eigen::VectorXd& kRow, Eig
     for (size_t e = 0; e < m_i.size(); ++e) {
         const double l = (x.col(m_j[e]) - x.col(m_i[e])).norm();
         const double factor =
-            l > kMinLength ? std::min(std::max(1.0, std::abs(1.0 - m_rest[e] / l)), kMaxTransverseFactor) : 1.0;
+            l > kMinLength ? std::min(std::max(1.0, std::abs(1.0 - m_rest[e] / l)), kMaxTransverseFactor)
+                           : 1.0;
         kRow[m_i[e]] += 2.0 * factor * m_k[e];
         kRow[m_j[e]] += 2.0 * factor * m_k[e];
         cRow[m_i[e]] += 2.0 * m_c[e];

@@ -44,10 +44,12 @@ public:
     void addForce(const Positions& x, Forces& f) const override;
     void addDampingForce(const Positions& x, const Velocities& v, Forces& f) const override;
     void addForceAndDamping(const Positions& x, const Velocities& v, Forces& f) const override;
-    void addStiffnessProduct(const Positions& x, const Eigen::Matrix3Xd& dx, Eigen::Matrix3Xd& df) const override;
+    void addStiffnessProduct(const Positions& x, const Eigen::Matrix3Xd& dx,
+                             Eigen::Matrix3Xd& df) const override;
     void addDefiniteStiffnessProduct(const Positions& x, const Eigen::Matrix3Xd& dx,
                                      Eigen::Matrix3Xd& df) const override;
-    void addDampingProduct(const Positions& x, const Eigen::Matrix3Xd& dv, Eigen::Matrix3Xd& df) const override;
+    void addDampingProduct(const Positions& x, const Eigen::Matrix3Xd& dv,
+                           Eigen::Matrix3Xd& df) const override;
     void addStiffnessBound(const Positions& x, Eigen::VectorXd& kRow, Eigen::VectorXd& cRow) const override;
     [[nodiscard]] double potentialEnergy(const Positions& x) const override;
     void onActiveSetChanged(const std::vector<std::uint8_t>& awake) override;

@@ -23,11 +23,11 @@
 namespace colonosim::physics {
 
 struct StabilityEstimate {
-    double omegaMax = 0.0;     ///< Gershgorin bound on the highest natural frequency, rad/s
-    double betaMin = 0.0;      ///< smallest damping-to-stiffness ratio, s
-    double betaMax = 0.0;      ///< largest damping-to-stiffness ratio, s
+    double omegaMax = 0.0;        ///< Gershgorin bound on the highest natural frequency, rad/s
+    double betaMin = 0.0;         ///< smallest damping-to-stiffness ratio, s
+    double betaMax = 0.0;         ///< largest damping-to-stiffness ratio, s
     double dampingRateMax = 0.0;  ///< Gershgorin bound C on M^-1 D, 1/s
-    int stiffestNode = -1;     ///< node that sets omegaMax
+    int stiffestNode = -1;        ///< node that sets omegaMax
 };
 
 /// Gershgorin estimate over the body's integrated nodes.

@@ -47,7 +47,8 @@ void solveTangent(const TissueBody& body, const Forces& rhs, Eigen::Matrix3Xd& d
     Eigen::Matrix3Xd ap;
     double rz = dot(r, z);
     const double rhsNorm = std::sqrt(dot(r, r));
-    for (int it = 0; it < 4 * static_cast<int>(3 * nodes.size()) && std::sqrt(dot(r, r)) > 1e-10 * rhsNorm; ++it) {
+    for (int it = 0; it < 4 * static_cast<int>(3 * nodes.size()) && std::sqrt(dot(r, r)) > 1e-10 * rhsNorm;
+         ++it) {
         apply(p, ap);
         const double pAp = dot(p, ap);
         if (!(pAp > 0.0)) {

@@ -6,13 +6,9 @@
 namespace colonosim::physics {
 
 TissueBody::TissueBody(const Positions& restPositions, const Eigen::VectorXd& masses)
-    : m_x(restPositions),
-      m_v(Velocities::Zero(3, restPositions.cols())),
-      m_mass(masses),
-      m_inverseMass(masses.cwiseInverse()),
-      m_fixed(static_cast<size_t>(restPositions.cols()), 0),
-      m_awake(static_cast<size_t>(restPositions.cols()), 1),
-      m_external(Forces::Zero(3, restPositions.cols()))
+    : m_x(restPositions), m_v(Velocities::Zero(3, restPositions.cols())), m_mass(masses),
+      m_inverseMass(masses.cwiseInverse()), m_fixed(static_cast<size_t>(restPositions.cols()), 0),
+      m_awake(static_cast<size_t>(restPositions.cols()), 1), m_external(Forces::Zero(3, restPositions.cols()))
 {
     if (masses.size() != restPositions.cols()) {
         throw std::invalid_argument("TissueBody: one mass per node is required");

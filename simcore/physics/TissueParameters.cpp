@@ -37,9 +37,9 @@ void TissueParameters::validate() const
 {
     params::validateFields<TissueParameters>("tissue", kTissueFields, *this);
     if (mesenteryMaxStrain < mesenteryStiffeningStrain) {
-        throw params::ParameterError("tissue.mesenteryMaxStrain = " + std::to_string(mesenteryMaxStrain) +
-                                     " must be >= tissue.mesenteryStiffeningStrain = " +
-                                     std::to_string(mesenteryStiffeningStrain));
+        throw params::ParameterError(
+            "tissue.mesenteryMaxStrain = " + std::to_string(mesenteryMaxStrain) +
+            " must be >= tissue.mesenteryStiffeningStrain = " + std::to_string(mesenteryStiffeningStrain));
     }
 }
 

@@ -17,52 +17,101 @@ using params::ParameterSpec;
 
 struct TissueParameters {
     static constexpr ParameterSpec youngModulusSpec{
-        "wallYoungModulus", "Pa", 1.74e6, 0.5e6, 2.0e7,
+        "wallYoungModulus",
+        "Pa",
+        1.74e6,
+        0.5e6,
+        2.0e7,
         "Young's modulus of the colon wall, human, longitudinal, at 10 cm/s",
         "J Biomech 91:102, 2019 (1.74 MPa at 10 cm/s; 5.18 MPa recto-sigmoid, SpringerPlus 2015)"};
-    static constexpr ParameterSpec thicknessSpec{
-        "wallThickness", "m", 2.0e-3, 0.5e-3, 4.0e-3, "distended wall thickness",
-        "radiology references: < 3 mm distended"};
-    static constexpr ParameterSpec densitySpec{
-        "wallDensity", "kg/m^3", 1040.0, 900.0, 1200.0, "wall tissue density (gives node masses)",
-        "assumption: typical soft-tissue density"};
+    static constexpr ParameterSpec thicknessSpec{"wallThickness",
+                                                 "m",
+                                                 2.0e-3,
+                                                 0.5e-3,
+                                                 4.0e-3,
+                                                 "distended wall thickness",
+                                                 "radiology references: < 3 mm distended"};
+    static constexpr ParameterSpec densitySpec{"wallDensity",
+                                               "kg/m^3",
+                                               1040.0,
+                                               900.0,
+                                               1200.0,
+                                               "wall tissue density (gives node masses)",
+                                               "assumption: typical soft-tissue density"};
     static constexpr ParameterSpec shearRatioSpec{
-        "shearStiffnessRatio", "1", 0.5, 0.0, 2.0,
+        "shearStiffnessRatio",
+        "1",
+        0.5,
+        0.0,
+        2.0,
         "stiffness of the crossing (shear) springs relative to the structural formula",
         "assumption; structural springs are calibrated with it in place (docs/calibration.md)"};
     static constexpr ParameterSpec bendingRatioSpec{
-        "bendingStiffnessRatio", "1", 0.02, 0.0, 0.5,
+        "bendingStiffnessRatio",
+        "1",
+        0.02,
+        0.0,
+        0.5,
         "stiffness of the springs across adjacent triangles (torsion between triangles) "
         "relative to the structural formula",
         "assumption (NASA paper's torsion springs); no measured wall bending rigidity in the reference"};
     static constexpr ParameterSpec dampingTimeSpec{
-        "dampingTime", "s", 5.0e-5, 0.0, 1.0e-3,
+        "dampingTime",
+        "s",
+        5.0e-5,
+        0.0,
+        1.0e-3,
         "beta in c = beta k for every wall, mesentery and anchor spring (stiffness-proportional damping)",
         "assumption: gives a damping ratio of about 0.2 in the highest wall mode; no measured value"};
     static constexpr ParameterSpec mesenteryModulusSpec{
-        "mesenteryModulus", "Pa", 0.5e6, 0.088e6, 6.858e6, "small-strain modulus of the mesentery",
+        "mesenteryModulus",
+        "Pa",
+        0.5e6,
+        0.088e6,
+        6.858e6,
+        "small-strain modulus of the mesentery",
         "White et al. (porcine mesocolon, mesentery and peritoneum 0.088-6.858 MPa)"};
     static constexpr ParameterSpec mesenteryThicknessSpec{
-        "mesenteryThickness", "m", 1.0e-3, 0.2e-3, 5.0e-3, "thickness of the mesenteric sheet",
-        "assumption"};
+        "mesenteryThickness", "m", 1.0e-3, 0.2e-3, 5.0e-3, "thickness of the mesenteric sheet", "assumption"};
     static constexpr ParameterSpec stiffeningStrainSpec{
-        "mesenteryStiffeningStrain", "1", 0.3, 0.05, 1.0,
+        "mesenteryStiffeningStrain",
+        "1",
+        0.3,
+        0.05,
+        1.0,
         "strain at which the mesentery's tangent stiffness has quadrupled",
         "assumption: soft-tissue toe region; White et al. report failure stretch 1.77-3.18"};
     static constexpr ParameterSpec maxStrainSpec{
-        "mesenteryMaxStrain", "1", 0.77, 0.1, 2.18,
+        "mesenteryMaxStrain",
+        "1",
+        0.77,
+        0.1,
+        2.18,
         "strain beyond which the mesentery stiffens no further (failure onset)",
         "White et al.: failure stretch 1.77-3.18 (strain 0.77-2.18)"};
     static constexpr ParameterSpec retroperitonealSpec{
-        "retroperitonealStiffness", "N/m", 200.0, 10.0, 5000.0,
+        "retroperitonealStiffness",
+        "N/m",
+        200.0,
+        10.0,
+        5000.0,
         "stiffness binding each node of a fixed segment to its rest position",
         "assumption: a fixed segment moves a few mm under the 10 N handle forces of the reference"};
     static constexpr ParameterSpec adhesionSpec{
-        "adhesionStiffness", "N/m", 500.0, 10.0, 10000.0, "stiffness of an adhesion anchor",
+        "adhesionStiffness",
+        "N/m",
+        500.0,
+        10.0,
+        10000.0,
+        "stiffness of an adhesion anchor",
         "assumption: stiffer than the retroperitoneal binding (prior surgery)"};
 
     static constexpr ParameterSpec surroundingDampingSpec{
-        "surroundingDampingRate", "1/s", 20.0, 0.0, 200.0,
+        "surroundingDampingRate",
+        "1/s",
+        20.0,
+        0.0,
+        200.0,
         "alpha in f = -alpha m v: drag of the surrounding viscera on the wall",
         "assumption: damps the ~1-3 Hz pendulum modes of the colon on its mesentery within about 0.2 s"};
 
@@ -85,12 +134,17 @@ struct TissueParameters {
 };
 
 struct EnvironmentParameters {
-    static constexpr ParameterSpec gravitySpec{"gravity", "m/s^2", 9.81, 0.0, 20.0,
-                                               "gravitational acceleration", "standard gravity"};
+    static constexpr ParameterSpec gravitySpec{
+        "gravity", "m/s^2", 9.81, 0.0, 20.0, "gravitational acceleration", "standard gravity"};
     static constexpr ParameterSpec pressureSpec{
-        "insufflationPressure", "Pa", 2000.0, 0.0, 10800.0,
+        "insufflationPressure",
+        "Pa",
+        2000.0,
+        0.0,
+        10800.0,
         "gauge pressure of insufflated gas in the lumen (2000 Pa = 15 mmHg)",
-        "9-57 mmHg with the tip free during colonoscopy; cecum ruptures at 81 mmHg (air-pressure injury study)"};
+        "9-57 mmHg with the tip free during colonoscopy; cecum ruptures at 81 mmHg (air-pressure injury "
+        "study)"};
 
     double gravity = gravitySpec.defaultValue;
     double insufflationPressure = pressureSpec.defaultValue;

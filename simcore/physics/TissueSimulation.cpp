@@ -10,7 +10,8 @@ namespace {
 constexpr size_t kMaxStoredDiagnostics = 100;
 }
 
-TissueSimulation::TissueSimulation(TissueBody& body, const SteppingPolicy& policy) : m_body(body), m_policy(policy)
+TissueSimulation::TissueSimulation(TissueBody& body, const SteppingPolicy& policy)
+    : m_body(body), m_policy(policy)
 {
     params::require("stepping", SteppingPolicy::loopStepSpec, policy.loopStep);
     params::require("stepping", SteppingPolicy::safetySpec, policy.safetyFactor);
@@ -53,8 +54,8 @@ void TissueSimulation::replan()
                 m_integrator = makeIntegrator(IntegratorKind::BackwardEuler);
             }
             m_substeps = 1;
-            note << integratorName(m_policy.integrator) << " would need " << needed << " substeps (stable step "
-                 << m_stableStep * 1e6 << " us) > " << m_policy.maxSubsteps
+            note << integratorName(m_policy.integrator) << " would need " << needed
+                 << " substeps (stable step " << m_stableStep * 1e6 << " us) > " << m_policy.maxSubsteps
                  << "; using backward_euler, 1 step per loop step";
         }
     }

@@ -28,14 +28,28 @@
 namespace colonosim::physics {
 
 struct SteppingPolicy {
-    static constexpr params::ParameterSpec loopStepSpec{"loopStep", "s", 1e-3, 1e-5, 1e-2,
-                                                        "fixed step of the procedure loop (1 kHz)",
-                                                        "haptic servo rate, reference/physical-parameters.md"};
-    static constexpr params::ParameterSpec safetySpec{"safetyFactor", "1", 0.9, 0.1, 1.0,
+    static constexpr params::ParameterSpec loopStepSpec{
+        "loopStep",
+        "s",
+        1e-3,
+        1e-5,
+        1e-2,
+        "fixed step of the procedure loop (1 kHz)",
+        "haptic servo rate, reference/physical-parameters.md"};
+    static constexpr params::ParameterSpec safetySpec{"safetyFactor",
+                                                      "1",
+                                                      0.9,
+                                                      0.1,
+                                                      1.0,
                                                       "fraction of the stable explicit step used",
                                                       "model choice: margin under the Gershgorin bound"};
     static constexpr params::ParameterSpec maxSpeedSpec{
-        "maxNodeSpeed", "m/s", 20.0, 1.0, 1000.0, "node speed above which a step is rejected as unstable",
+        "maxNodeSpeed",
+        "m/s",
+        20.0,
+        1.0,
+        1000.0,
+        "node speed above which a step is rejected as unstable",
         "model choice: 40x the 0.5 m/s fastest insertion"};
 
     IntegratorKind integrator = IntegratorKind::SymplecticEuler;
@@ -43,7 +57,8 @@ struct SteppingPolicy {
     double safetyFactor = safetySpec.defaultValue;
     double maxNodeSpeed = maxSpeedSpec.defaultValue;
     int maxSubsteps = 64;  ///< explicit substeps allowed per loop step before falling back to implicit
-    int replanInterval = 50;  ///< loop steps between re-evaluations of the stability bound at the current state
+    int replanInterval =
+        50;  ///< loop steps between re-evaluations of the stability bound at the current state
 };
 
 struct StepDiagnostic {

@@ -63,7 +63,8 @@ Eigen::VectorXd wallNodeMasses(const geometry::TriangleMesh& mesh, const TissueP
 }
 
 void addWallSprings(const geometry::TriangleMesh& mesh, const std::vector<Eigen::Vector3d>& axis,
-                    const TissueParameters& tissue, const StiffnessCalibration& calibration, SpringSet& springs)
+                    const TissueParameters& tissue, const StiffnessCalibration& calibration,
+                    SpringSet& springs)
 {
     std::map<std::pair<int, int>, EdgeInfo> edges;
     for (int t = 0; t < mesh.numTriangles(); ++t) {
@@ -97,7 +98,8 @@ void addWallSprings(const geometry::TriangleMesh& mesh, const std::vector<Eigen:
             family = SpringFamily::Shear;
             k = tissue.shearStiffnessRatio * mixed * base;
         } else {
-            const Eigen::Vector3d localAxis = (axis[static_cast<size_t>(a)] + axis[static_cast<size_t>(b)]).normalized();
+            const Eigen::Vector3d localAxis =
+                (axis[static_cast<size_t>(a)] + axis[static_cast<size_t>(b)]).normalized();
             const bool alongAxis = length > 0.0 && std::abs(localAxis.dot(d)) >= 0.5 * length;
             k = (alongAxis ? calibration.axial : calibration.circumferential) * base;
         }
@@ -110,7 +112,8 @@ void addWallSprings(const geometry::TriangleMesh& mesh, const std::vector<Eigen:
             const double baseAcross = vanGelderStiffness(et, area, across);
             const double ratio = diagonal ? tissue.shearStiffnessRatio : tissue.bendingStiffnessRatio;
             const double kAcross = ratio * mixed * baseAcross;
-            springs.add(p, q, across, kAcross, beta * kAcross, diagonal ? SpringFamily::Shear : SpringFamily::Bending);
+            springs.add(p, q, across, kAcross, beta * kAcross,
+                        diagonal ? SpringFamily::Shear : SpringFamily::Bending);
         }
     }
 }

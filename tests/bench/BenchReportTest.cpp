@@ -142,7 +142,8 @@ void checkSummaryHasRequiredFiniteFigures(const QuickReport& r)
 TEST(BenchReport, QuickRunWritesConvergentCsvAndCompleteSummary)
 {
     QuickReport r;
-    r.s_dir = std::filesystem::temp_directory_path() / ("colonosim_bench_report_test_" + std::to_string(::getpid()));
+    r.s_dir = std::filesystem::temp_directory_path() /
+              ("colonosim_bench_report_test_" + std::to_string(::getpid()));
     std::filesystem::remove_all(r.s_dir);
     std::ostringstream log;
     r.s_status = colonosim::bench::runBenchReport({true, r.s_dir}, log);

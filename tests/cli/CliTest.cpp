@@ -103,7 +103,8 @@ TEST(Cli, ParameterDocumentationIsUpToDate)
     std::ifstream file(std::string(COLONOSIM_SOURCE_DIR) + "/docs/parameters.md");
     std::stringstream committed;
     committed << file.rdbuf();
-    EXPECT_EQ(committed.str(), r.output) << "regenerate docs/parameters.md with `colonosim params --markdown`";
+    EXPECT_EQ(committed.str(), r.output)
+        << "regenerate docs/parameters.md with `colonosim params --markdown`";
 }
 
 TEST(Cli, MeshInspectReadsAGoodFileAndRefusesBadOnes)

@@ -20,8 +20,9 @@ TEST(AnatomyParameters, RangesSpanThePopulation)
     // Utano 2021: 110-196 cm; Hanson 2007: 210.8 cm in incomplete examinations.
     double minTotal = 0.0;
     double maxTotal = 0.0;
-    const std::set<std::string> lengths{"rectumLength", "sigmoidLength", "descendingLength", "splenicFlexureLength",
-                                        "transverseLength", "hepaticFlexureLength", "ascendingLength", "cecumLength"};
+    const std::set<std::string> lengths{"rectumLength",         "sigmoidLength",    "descendingLength",
+                                        "splenicFlexureLength", "transverseLength", "hepaticFlexureLength",
+                                        "ascendingLength",      "cecumLength"};
     std::set<std::string> names;
     for (const auto& field : AnatomyParameters::fields()) {
         names.insert(std::string(field.spec->name));

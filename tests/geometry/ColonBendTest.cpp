@@ -23,7 +23,10 @@ struct BendCase {
     std::array<double, kNumSegments> lengths;  // m, rectum -> cecum
 };
 
-void PrintTo(const BendCase& c, std::ostream* os) { *os << c.name; }
+void PrintTo(const BendCase& c, std::ostream* os)
+{
+    *os << c.name;
+}
 
 AnatomyParameters withLengths(const std::array<double, kNumSegments>& l)
 {
@@ -58,7 +61,8 @@ double smoothedCurvature(const Centreline& c, double s)
     double sum = 0.0;
     int count = 0;
     for (double x = s - kWindow; x <= s + kWindow + 1e-12; x += 0.001) {
-        if (x < kStencil || x > c.length() - kStencil) continue;
+        if (x < kStencil || x > c.length() - kStencil)
+            continue;
         sum += rawCurvature(c, x);
         ++count;
     }
@@ -105,7 +109,8 @@ TEST_P(ColonBendCase, BendRadiusIsAtLeastTwiceTheDeclaredLumenRadius)
         std::cout << GetParam().name << " " << segmentName(static_cast<Segment>(seg)) << ": min bend radius "
                   << 1e3 * worst[k] * declared << " mm at s = " << worstS[k] << " m (declared lumen radius "
                   << 1e3 * declared << " mm)\n";
-        EXPECT_GE(worst[k], kMinBendRadiusRatio) << segmentName(static_cast<Segment>(seg)) << " at s = " << worstS[k] << " m";
+        EXPECT_GE(worst[k], kMinBendRadiusRatio)
+            << segmentName(static_cast<Segment>(seg)) << " at s = " << worstS[k] << " m";
     }
 }
 
@@ -133,16 +138,19 @@ TEST_P(ColonBendCase, BendLimitingNarrowsTheLumenByAtMost20Percent)
     for (int seg = 0; seg < kNumSegments; ++seg) {
         const auto k = static_cast<std::size_t>(seg);
         std::cout << GetParam().name << " " << segmentName(static_cast<Segment>(seg)) << ": min lumen radius "
-                  << 1e3 * minRadius[k] << " mm (declared " << 0.5e3 * p.diameter(static_cast<Segment>(seg)) << " mm)\n";
-        EXPECT_GE(worst[k], 1.0) << segmentName(static_cast<Segment>(seg)) << " narrowed below 80 % at s = " << worstS[k] << " m";
+                  << 1e3 * minRadius[k] << " mm (declared " << 0.5e3 * p.diameter(static_cast<Segment>(seg))
+                  << " mm)\n";
+        EXPECT_GE(worst[k], 1.0) << segmentName(static_cast<Segment>(seg))
+                                 << " narrowed below 80 % at s = " << worstS[k] << " m";
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Population, ColonBendCase,
-                         ::testing::Values(BendCase{"typical", {0.15, 0.40, 0.25, 0.08, 0.48, 0.07, 0.17, 0.06}},
-                                           BendCase{"short110cm", {0.11, 0.25, 0.16, 0.05, 0.32, 0.05, 0.12, 0.04}},
-                                           BendCase{"redundant210cm", {0.16, 0.67, 0.25, 0.08, 0.66, 0.07, 0.17, 0.06}}),
-                         [](const auto& info) { return std::string(info.param.name); });
+INSTANTIATE_TEST_SUITE_P(
+    Population, ColonBendCase,
+    ::testing::Values(BendCase{"typical", {0.15, 0.40, 0.25, 0.08, 0.48, 0.07, 0.17, 0.06}},
+                      BendCase{"short110cm", {0.11, 0.25, 0.16, 0.05, 0.32, 0.05, 0.12, 0.04}},
+                      BendCase{"redundant210cm", {0.16, 0.67, 0.25, 0.08, 0.66, 0.07, 0.17, 0.06}}),
+    [](const auto& info) { return std::string(info.param.name); });
 
 }  // namespace
 }  // namespace colonosim::geometry

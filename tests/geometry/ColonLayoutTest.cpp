@@ -37,7 +37,8 @@ TEST_P(ColonLayoutCase, EachSegmentHasItsDeclaredLengthWithin1Percent)
     const ColonLayout layout = layoutColon(p);
     for (int i = 0; i < kNumSegments; ++i) {
         const double declared = p.length(static_cast<Segment>(i));
-        const double actual = layout.segmentStart[static_cast<std::size_t>(i) + 1] - layout.segmentStart[static_cast<std::size_t>(i)];
+        const double actual = layout.segmentStart[static_cast<std::size_t>(i) + 1] -
+                              layout.segmentStart[static_cast<std::size_t>(i)];
         EXPECT_NEAR(actual, declared, 0.01 * declared) << segmentName(static_cast<Segment>(i));
     }
     EXPECT_NEAR(layout.centreline.length(), p.totalLength(), 0.01 * p.totalLength());
@@ -57,7 +58,8 @@ TEST_P(ColonLayoutCase, FramesAreOrthonormalAndRotationMinimising)
         ASSERT_NEAR(c.tangents[k].dot(c.normals[k]), 0.0, 1e-9);
         // Parallel transport has no twist: the change of the normal has no
         // component along the mean binormal (accumulated below).
-        const Eigen::Vector3d b = c.tangents[k].cross(c.normals[k]) + c.tangents[k + 1].cross(c.normals[k + 1]);
+        const Eigen::Vector3d b =
+            c.tangents[k].cross(c.normals[k]) + c.tangents[k + 1].cross(c.normals[k + 1]);
         totalTwist += std::abs((c.normals[k + 1] - c.normals[k]).dot(0.5 * b));
         totalTurn += (c.tangents[k + 1] - c.tangents[k]).norm();
         // Radius changes smoothly: < 0.5 mm per 1 mm step (the steepest is the
@@ -65,7 +67,8 @@ TEST_P(ColonLayoutCase, FramesAreOrthonormalAndRotationMinimising)
         EXPECT_LT(std::abs(c.radius[k + 1] - c.radius[k]), 5e-4);
         // No bend sharper than the lumen is wide (the rings would cross).
         if (i > 0) {
-            const double curvature = (c.tangents[k + 1] - c.tangents[k - 1]).norm() / (c.arcLength[k + 1] - c.arcLength[k - 1]);
+            const double curvature =
+                (c.tangents[k + 1] - c.tangents[k - 1]).norm() / (c.arcLength[k + 1] - c.arcLength[k - 1]);
             EXPECT_LT(curvature * c.radius[k], kMaxBendRatio + 0.05) << "at sample " << i;
         }
     }
@@ -82,18 +85,20 @@ TEST_P(ColonLayoutCase, AnatomyIsOnTheExpectedSides)
     EXPECT_GT(station(Segment::SplenicFlexure).x(), 0.0);
     EXPECT_LT(station(Segment::Ascending).x(), 0.0) << "ascending colon on the patient's right";
     EXPECT_LT(station(Segment::Cecum).x(), 0.0);
-    EXPECT_GT(station(Segment::SplenicFlexure).z(), station(Segment::Sigmoid).z() + 0.1) << "splenic flexure high";
+    EXPECT_GT(station(Segment::SplenicFlexure).z(), station(Segment::Sigmoid).z() + 0.1)
+        << "splenic flexure high";
     // The rectum rises from the anus and bends posteriorly along the sacrum.
     const CentrelineSample mid = sampleCentreline(layout.centreline, 0.5 * layout.segmentStart[1]);
     EXPECT_GT(mid.point.y(), 0.0);
     EXPECT_GT(mid.point.z(), 0.0);
 }
 
-INSTANTIATE_TEST_SUITE_P(Population, ColonLayoutCase,
-                         ::testing::Values(LayoutCase{"typical", {0.15, 0.40, 0.25, 0.08, 0.48, 0.07, 0.17, 0.06}},
-                                           LayoutCase{"short110cm", {0.11, 0.25, 0.16, 0.05, 0.32, 0.05, 0.12, 0.04}},
-                                           LayoutCase{"redundant210cm", {0.16, 0.67, 0.25, 0.08, 0.66, 0.07, 0.17, 0.06}}),
-                         [](const auto& info) { return std::string(info.param.name); });
+INSTANTIATE_TEST_SUITE_P(
+    Population, ColonLayoutCase,
+    ::testing::Values(LayoutCase{"typical", {0.15, 0.40, 0.25, 0.08, 0.48, 0.07, 0.17, 0.06}},
+                      LayoutCase{"short110cm", {0.11, 0.25, 0.16, 0.05, 0.32, 0.05, 0.12, 0.04}},
+                      LayoutCase{"redundant210cm", {0.16, 0.67, 0.25, 0.08, 0.66, 0.07, 0.17, 0.06}}),
+    [](const auto& info) { return std::string(info.param.name); });
 
 TEST(ColonLayout, LongerTransverseSagsLower)
 {
@@ -110,7 +115,8 @@ TEST(ColonLayout, LongerTransverseSagsLower)
         }
         return z;
     };
-    EXPECT_LT(lowestTransverseZ(layoutColon(longTransverse)), lowestTransverseZ(layoutColon(shortTransverse)) - 0.05);
+    EXPECT_LT(lowestTransverseZ(layoutColon(longTransverse)),
+              lowestTransverseZ(layoutColon(shortTransverse)) - 0.05);
 }
 
 }  // namespace

@@ -30,8 +30,8 @@ struct DistanceCase {
     const char* name;
     ImplicitShape shape;
     Eigen::Vector3d point;
-    double expected;       ///< exact signed distance, m
-    double tolerance;      ///< m; 1e-12 where the formula is exact
+    double expected;           ///< exact signed distance, m
+    double tolerance;          ///< m; 1e-12 where the formula is exact
     Eigen::Vector3d gradient;  ///< expected outward unit gradient
 };
 
@@ -56,18 +56,39 @@ INSTANTIATE_TEST_SUITE_P(
     Table, SignedDistance,
     ::testing::Values(
         // A sphere is an ellipsoid with equal axes: the formula is exact everywhere.
-        DistanceCase{"sphereOutside", ellipsoid(kC, Eigen::Vector3d::Constant(0.05)), kC + Eigen::Vector3d(0, 0.08, 0), 0.03, 1e-12, Eigen::Vector3d::UnitY()},
-        DistanceCase{"sphereInside", ellipsoid(kC, Eigen::Vector3d::Constant(0.05)), kC + Eigen::Vector3d(-0.02, 0, 0), -0.03, 1e-12, -Eigen::Vector3d::UnitX()},
+        DistanceCase{"sphereOutside", ellipsoid(kC, Eigen::Vector3d::Constant(0.05)),
+                     kC + Eigen::Vector3d(0, 0.08, 0), 0.03, 1e-12, Eigen::Vector3d::UnitY()},
+        DistanceCase{"sphereInside", ellipsoid(kC, Eigen::Vector3d::Constant(0.05)),
+                     kC + Eigen::Vector3d(-0.02, 0, 0), -0.03, 1e-12, -Eigen::Vector3d::UnitX()},
         // On the surface the ellipsoid distance is exact (0) and the gradient is the surface normal.
-        DistanceCase{"ellipsoidSurfaceX", ellipsoid(kC, kAxes), kC + Eigen::Vector3d(0.10, 0, 0), 0.0, 1e-12, Eigen::Vector3d::UnitX()},
-        DistanceCase{"ellipsoidSurfaceZ", ellipsoid(kC, kAxes), kC + Eigen::Vector3d(0, 0, -0.02), 0.0, 1e-12, -Eigen::Vector3d::UnitZ()},
+        DistanceCase{"ellipsoidSurfaceX", ellipsoid(kC, kAxes), kC + Eigen::Vector3d(0.10, 0, 0), 0.0, 1e-12,
+                     Eigen::Vector3d::UnitX()},
+        DistanceCase{"ellipsoidSurfaceZ", ellipsoid(kC, kAxes), kC + Eigen::Vector3d(0, 0, -0.02), 0.0, 1e-12,
+                     -Eigen::Vector3d::UnitZ()},
         // Along a principal axis the first-order formula is exact too.
-        DistanceCase{"ellipsoidAxisOutside", ellipsoid(kC, kAxes), kC + Eigen::Vector3d(0, 0.09, 0), 0.04, 1e-12, Eigen::Vector3d::UnitY()},
-        DistanceCase{"ellipsoidAxisInside", ellipsoid(kC, kAxes), kC + Eigen::Vector3d(0, 0, 0.01), -0.01, 1e-12, Eigen::Vector3d::UnitZ()},
+        DistanceCase{"ellipsoidAxisOutside", ellipsoid(kC, kAxes), kC + Eigen::Vector3d(0, 0.09, 0), 0.04,
+                     1e-12, Eigen::Vector3d::UnitY()},
+        DistanceCase{"ellipsoidAxisInside", ellipsoid(kC, kAxes), kC + Eigen::Vector3d(0, 0, 0.01), -0.01,
+                     1e-12, Eigen::Vector3d::UnitZ()},
         DistanceCase{"ellipsoidCentre", ellipsoid(kC, kAxes), kC, -0.02, 1e-12, Eigen::Vector3d::UnitZ()},
-        DistanceCase{"capsuleSide", capsule({0, 0, 0}, {0, 0, 1}, 0.1), {0.3, 0, 0.5}, 0.2, 1e-12, Eigen::Vector3d::UnitX()},
-        DistanceCase{"capsuleEnd", capsule({0, 0, 0}, {0, 0, 1}, 0.1), {0, 0, 1.25}, 0.15, 1e-12, Eigen::Vector3d::UnitZ()},
-        DistanceCase{"capsuleInside", capsule({0, 0, 0}, {0, 0, 1}, 0.1), {0, -0.04, 0.2}, -0.06, 1e-12, -Eigen::Vector3d::UnitY()}),
+        DistanceCase{"capsuleSide",
+                     capsule({0, 0, 0}, {0, 0, 1}, 0.1),
+                     {0.3, 0, 0.5},
+                     0.2,
+                     1e-12,
+                     Eigen::Vector3d::UnitX()},
+        DistanceCase{"capsuleEnd",
+                     capsule({0, 0, 0}, {0, 0, 1}, 0.1),
+                     {0, 0, 1.25},
+                     0.15,
+                     1e-12,
+                     Eigen::Vector3d::UnitZ()},
+        DistanceCase{"capsuleInside",
+                     capsule({0, 0, 0}, {0, 0, 1}, 0.1),
+                     {0, -0.04, 0.2},
+                     -0.06,
+                     1e-12,
+                     -Eigen::Vector3d::UnitY()}),
     [](const auto& info) { return std::string(info.param.name); });
 
 TEST(SignedDistance, EllipsoidSignIsRightOffAxis)
@@ -78,7 +99,8 @@ TEST(SignedDistance, EllipsoidSignIsRightOffAxis)
     for (int i = 0; i < 200; ++i) {
         const double a = 0.1 * i;
         const double scale = 0.5 + 0.01 * i;  // from inside (0.5) to outside (2.5)
-        const Eigen::Vector3d dir(std::cos(a) * std::sin(3 * a), std::sin(a) * std::sin(3 * a), std::cos(3 * a));
+        const Eigen::Vector3d dir(std::cos(a) * std::sin(3 * a), std::sin(a) * std::sin(3 * a),
+                                  std::cos(3 * a));
         const Eigen::Vector3d p = kC + scale * kAxes.cwiseProduct(dir);
         const double f = (p - kC).cwiseQuotient(kAxes).squaredNorm() - 1.0;
         Eigen::Vector3d gradient;

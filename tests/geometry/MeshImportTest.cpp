@@ -25,7 +25,10 @@ constexpr double kArc = 1.2 * std::numbers::pi / 2.0;
 constexpr int kRings = 120;
 constexpr int kPerRing = 32;
 
-Eigen::Vector3d trueCentre(double phi) { return {kBendRadius * (1.0 - std::cos(phi)), 0.0, kBendRadius * std::sin(phi)}; }
+Eigen::Vector3d trueCentre(double phi)
+{
+    return {kBendRadius * (1.0 - std::cos(phi)), 0.0, kBendRadius * std::sin(phi)};
+}
 
 /// A curved tube open at both ends, normals outward.
 TriangleMesh curvedTube()
@@ -39,7 +42,8 @@ TriangleMesh curvedTube()
         const Eigen::Vector3d b = t.cross(n);
         for (int j = 0; j < kPerRing; ++j) {
             const double theta = 2.0 * std::numbers::pi * j / kPerRing;
-            mesh.vertices.col(i * kPerRing + j) = trueCentre(phi) + kTubeRadius * (std::cos(theta) * n + std::sin(theta) * b);
+            mesh.vertices.col(i * kPerRing + j) =
+                trueCentre(phi) + kTubeRadius * (std::cos(theta) * n + std::sin(theta) * b);
         }
     }
     for (int i = 0; i + 1 < kRings; ++i) {
@@ -68,11 +72,31 @@ enum class Format { Obj, StlAscii, StlBinary, PlyAscii, PlyBinary };
 std::filesystem::path write(const TriangleMesh& mesh, const std::string& stem, Format format)
 {
     switch (format) {
-    case Format::Obj: { auto p = tempDir() / (stem + ".obj"); writeObj(p, mesh); return p; }
-    case Format::StlAscii: { auto p = tempDir() / (stem + "_a.stl"); writeStl(p, mesh, MeshEncoding::Ascii); return p; }
-    case Format::StlBinary: { auto p = tempDir() / (stem + "_b.stl"); writeStl(p, mesh, MeshEncoding::Binary); return p; }
-    case Format::PlyAscii: { auto p = tempDir() / (stem + "_a.ply"); writePly(p, mesh, MeshEncoding::Ascii); return p; }
-    case Format::PlyBinary: { auto p = tempDir() / (stem + "_b.ply"); writePly(p, mesh, MeshEncoding::Binary); return p; }
+    case Format::Obj: {
+        auto p = tempDir() / (stem + ".obj");
+        writeObj(p, mesh);
+        return p;
+    }
+    case Format::StlAscii: {
+        auto p = tempDir() / (stem + "_a.stl");
+        writeStl(p, mesh, MeshEncoding::Ascii);
+        return p;
+    }
+    case Format::StlBinary: {
+        auto p = tempDir() / (stem + "_b.stl");
+        writeStl(p, mesh, MeshEncoding::Binary);
+        return p;
+    }
+    case Format::PlyAscii: {
+        auto p = tempDir() / (stem + "_a.ply");
+        writePly(p, mesh, MeshEncoding::Ascii);
+        return p;
+    }
+    case Format::PlyBinary: {
+        auto p = tempDir() / (stem + "_b.ply");
+        writePly(p, mesh, MeshEncoding::Binary);
+        return p;
+    }
     }
     return {};
 }
@@ -90,7 +114,8 @@ TEST_P(ImportFormat, RoundTripsCountsOrientationAndCentreline)
     const auto path = write(tube, "tube", GetParam().format);
     const auto start = std::chrono::steady_clock::now();
     const ImportedMesh imported = importMesh(path);
-    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    const double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     std::cout << GetParam().name << ": import " << ms << " ms; " << imported.report.summary() << "\n";
     EXPECT_EQ(imported.mesh.numVertices(), tube.numVertices());
     EXPECT_EQ(imported.mesh.numTriangles(), tube.numTriangles());
@@ -111,7 +136,8 @@ TEST_P(ImportFormat, RoundTripsCountsOrientationAndCentreline)
         worst = std::max(worst, (p - trueCentre(clamped)).norm());
     }
     const double trueLength = kBendRadius * kArc;
-    std::cout << "  centreline: max deviation " << worst << " m, length " << c.length() << " vs " << trueLength << " m\n";
+    std::cout << "  centreline: max deviation " << worst << " m, length " << c.length() << " vs "
+              << trueLength << " m\n";
     EXPECT_LT(worst, 0.1 * kTubeRadius);
     EXPECT_NEAR(c.length(), trueLength, 0.03 * trueLength);
     const double midRadius = c.radius[c.radius.size() / 2];
@@ -119,8 +145,10 @@ TEST_P(ImportFormat, RoundTripsCountsOrientationAndCentreline)
 }
 
 INSTANTIATE_TEST_SUITE_P(Formats, ImportFormat,
-                         ::testing::Values(FormatCase{"obj", Format::Obj}, FormatCase{"stlAscii", Format::StlAscii},
-                                           FormatCase{"stlBinary", Format::StlBinary}, FormatCase{"plyAscii", Format::PlyAscii},
+                         ::testing::Values(FormatCase{"obj", Format::Obj},
+                                           FormatCase{"stlAscii", Format::StlAscii},
+                                           FormatCase{"stlBinary", Format::StlBinary},
+                                           FormatCase{"plyAscii", Format::PlyAscii},
                                            FormatCase{"plyBinary", Format::PlyBinary}),
                          [](const auto& info) { return std::string(info.param.name); });
 
@@ -128,7 +156,8 @@ INSTANTIATE_TEST_SUITE_P(Formats, ImportFormat,
 
 void removeFan(TriangleMesh& mesh, int vertex)
 {
-    std::erase_if(mesh.triangles, [vertex](const auto& t) { return t[0] == vertex || t[1] == vertex || t[2] == vertex; });
+    std::erase_if(mesh.triangles,
+                  [vertex](const auto& t) { return t[0] == vertex || t[1] == vertex || t[2] == vertex; });
 }
 
 struct BrokenCase {
@@ -167,12 +196,14 @@ TEST_P(BrokenMesh, IsRepairedOrRefusedWithAMessage)
     // Outward normals: the first triangle's normal points away from the axis.
     const auto& t = imported.mesh.triangles.front();
     const Eigen::Vector3d a = imported.mesh.vertices.col(t[0]);
-    const Eigen::Vector3d n = (imported.mesh.vertices.col(t[1]) - a).cross(imported.mesh.vertices.col(t[2]) - a);
+    const Eigen::Vector3d n =
+        (imported.mesh.vertices.col(t[1]) - a).cross(imported.mesh.vertices.col(t[2]) - a);
     const Centreline axis = computeCentreline(imported.mesh);
     double dist = 0.0;
     Eigen::Index nearest = 0;
     Eigen::Matrix3Xd pts(3, axis.numPoints());
-    for (int i = 0; i < axis.numPoints(); ++i) pts.col(i) = axis.points[static_cast<std::size_t>(i)];
+    for (int i = 0; i < axis.numPoints(); ++i)
+        pts.col(i) = axis.points[static_cast<std::size_t>(i)];
     dist = (pts.colwise() - a).colwise().squaredNorm().minCoeff(&nearest);
     EXPECT_GT(dist, 0.0);
     EXPECT_GT(n.dot(a - pts.col(nearest)), 0.0) << "normals point out of the lumen";
@@ -186,7 +217,11 @@ INSTANTIATE_TEST_SUITE_P(
         BrokenCase{"smallHole", Format::Obj, [](TriangleMesh& m) { removeFan(m, kMid); }, nullptr,
                    [](const MeshRepairReport& r) { EXPECT_EQ(r.numHolesFilled, 1); }},
         BrokenCase{"largeHole", Format::PlyBinary,
-                   [](TriangleMesh& m) { for (int k = 0; k < 12; ++k) for (int j = 0; j < 8; ++j) removeFan(m, (30 + k) * kPerRing + j); },
+                   [](TriangleMesh& m) {
+                       for (int k = 0; k < 12; ++k)
+                           for (int j = 0; j < 8; ++j)
+                               removeFan(m, (30 + k) * kPerRing + j);
+                   },
                    "too large to fill", nullptr},
         BrokenCase{"nonManifoldEdge", Format::PlyAscii,
                    [](TriangleMesh& m) {
@@ -205,27 +240,41 @@ INSTANTIATE_TEST_SUITE_P(
                        m.triangles.push_back({kMid, kMid + 1, twin});
                        m.triangles.push_back({kMid, kMid, kMid + 1});
                    },
-                   nullptr, [](const MeshRepairReport& r) { EXPECT_EQ(r.numDegenerateFacesRemoved, 2); EXPECT_EQ(r.numMergedVertices, 1); }},
-        BrokenCase{"globallyInverted", Format::StlBinary, [](TriangleMesh& m) { for (auto& t : m.triangles) std::swap(t[1], t[2]); },
+                   nullptr,
+                   [](const MeshRepairReport& r) {
+                       EXPECT_EQ(r.numDegenerateFacesRemoved, 2);
+                       EXPECT_EQ(r.numMergedVertices, 1);
+                   }},
+        BrokenCase{"globallyInverted", Format::StlBinary,
+                   [](TriangleMesh& m) {
+                       for (auto& t : m.triangles)
+                           std::swap(t[1], t[2]);
+                   },
                    nullptr, [](const MeshRepairReport& r) { EXPECT_TRUE(r.globallyFlipped); }},
         BrokenCase{"someFacesInverted", Format::Obj,
-                   [](TriangleMesh& m) { for (std::size_t f = 1000; f < 1400; f += 3) std::swap(m.triangles[f][1], m.triangles[f][2]); },
+                   [](TriangleMesh& m) {
+                       for (std::size_t f = 1000; f < 1400; f += 3)
+                           std::swap(m.triangles[f][1], m.triangles[f][2]);
+                   },
                    nullptr, [](const MeshRepairReport& r) { EXPECT_GT(r.numFacesReoriented, 0); }},
         BrokenCase{"twoComponents", Format::PlyBinary,
                    [](TriangleMesh& m) {
                        const int n = m.numVertices();
                        const auto numTriangles = m.triangles.size();
                        m.vertices.conservativeResize(3, 2 * n);
-                       m.vertices.rightCols(n) = m.vertices.leftCols(n).colwise() + Eigen::Vector3d(1.0, 0.0, 0.0);
+                       m.vertices.rightCols(n) =
+                           m.vertices.leftCols(n).colwise() + Eigen::Vector3d(1.0, 0.0, 0.0);
                        for (std::size_t f = 0; f < numTriangles; ++f) {
                            const auto t = m.triangles[f];
                            m.triangles.push_back({t[0] + n, t[1] + n, t[2] + n});
                        }
                    },
                    "2 connected components (allowed: 1)", nullptr},
-        BrokenCase{"nanCoordinateObj", Format::Obj, [](TriangleMesh& m) { m.vertices(1, 7) = std::numeric_limits<double>::quiet_NaN(); },
+        BrokenCase{"nanCoordinateObj", Format::Obj,
+                   [](TriangleMesh& m) { m.vertices(1, 7) = std::numeric_limits<double>::quiet_NaN(); },
                    "non-finite coordinate", nullptr},
-        BrokenCase{"infCoordinateStl", Format::StlBinary, [](TriangleMesh& m) { m.vertices(2, 9) = std::numeric_limits<double>::infinity(); },
+        BrokenCase{"infCoordinateStl", Format::StlBinary,
+                   [](TriangleMesh& m) { m.vertices(2, 9) = std::numeric_limits<double>::infinity(); },
                    "non-finite coordinate", nullptr}),
     [](const auto& info) { return std::string(info.param.name); });
 
@@ -259,7 +308,8 @@ std::string junk(std::size_t n)
 {
     std::mt19937 random(42);
     std::string bytes(n, '\0');
-    for (char& c : bytes) c = static_cast<char>(random() & 0xff);
+    for (char& c : bytes)
+        c = static_cast<char>(random() & 0xff);
     return bytes;
 }
 
@@ -268,7 +318,8 @@ INSTANTIATE_TEST_SUITE_P(Files, RawFile,
                                            RawFileCase{"junkStl", "junk.stl", junk(4000), ": "},
                                            RawFileCase{"junkPly", "junk.ply", junk(4000), ": "},
                                            RawFileCase{"junkObj", "junk.obj", junk(4000), ": "},
-                                           RawFileCase{"unknownExtension", "tube.xyz", "v 0 0 0\n", "unknown extension '.xyz'"},
+                                           RawFileCase{"unknownExtension", "tube.xyz", "v 0 0 0\n",
+                                                       "unknown extension '.xyz'"},
                                            RawFileCase{"missing", "missing.obj", "", "empty file"}),
                          [](const auto& info) { return std::string(info.param.name); });
 

@@ -18,8 +18,10 @@ protected:
         s_anatomy = new ColonAnatomy(buildProceduralColon(AnatomyParameters{}));
         const auto start = std::chrono::steady_clock::now();
         s_mapping = new MeshMapping(s_anatomy->physicsMesh, s_anatomy->visualMesh.vertices);
-        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        std::cout << "mapping build: " << seconds * 1e3 << " ms for " << s_mapping->numVisualVertices() << " vertices\n";
+        const double seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        std::cout << "mapping build: " << seconds * 1e3 << " ms for " << s_mapping->numVisualVertices()
+                  << " vertices\n";
     }
     static void TearDownTestSuite()
     {
@@ -50,7 +52,8 @@ TEST_F(MeshMappingOnColon, RestRoundTripIsExact)
 
 TEST_F(MeshMappingOnColon, RigidMotionMovesVerticesRigidly)
 {
-    const Eigen::Matrix3d rotation = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+    const Eigen::Matrix3d rotation =
+        Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
     const Eigen::Vector3d translation(0.05, -0.2, 0.1);
     const Eigen::Matrix3Xd moved = (rotation * s_anatomy->physicsMesh.vertices).colwise() + translation;
     Eigen::Matrix3Xd mapped;
@@ -119,7 +122,8 @@ TEST_F(MeshMappingOnColon, RemapAfterSplittingATriangle)
     const auto t = edited.triangles[static_cast<std::size_t>(split)];
     const int centre = edited.numVertices();
     edited.vertices.conservativeResize(3, centre + 1);
-    edited.vertices.col(centre) = (edited.vertices.col(t[0]) + edited.vertices.col(t[1]) + edited.vertices.col(t[2])) / 3.0;
+    edited.vertices.col(centre) =
+        (edited.vertices.col(t[0]) + edited.vertices.col(t[1]) + edited.vertices.col(t[2])) / 3.0;
     edited.triangles[static_cast<std::size_t>(split)] = {t[0], t[1], centre};
     edited.triangles.push_back({t[1], t[2], centre});
     edited.triangles.push_back({t[2], t[0], centre});

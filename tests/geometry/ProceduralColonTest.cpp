@@ -25,7 +25,8 @@ TEST_F(ProceduralColon, NodeCountsMatchThePaper)
     const int numPhysics = anatomy().physicsMesh.numVertices();
     const int numVisual = anatomy().visualMesh.numVertices();
     std::cout << "physics nodes " << numPhysics << ", triangles " << anatomy().physicsMesh.numTriangles()
-              << "; visual vertices " << numVisual << ", triangles " << anatomy().visualMesh.numTriangles() << "\n";
+              << "; visual vertices " << numVisual << ", triangles " << anatomy().visualMesh.numTriangles()
+              << "\n";
     EXPECT_NEAR(numPhysics, 1900, 50);
     EXPECT_GE(numVisual, 50000);
     EXPECT_EQ(anatomy().physicsNodes.size(), static_cast<std::size_t>(numPhysics));
@@ -38,7 +39,8 @@ TEST_F(ProceduralColon, MeshesAreManifoldOrientedAndOpenOnlyAtTheAnus)
         const testing::EdgeCounts counts = testing::countEdges(*mesh);
         EXPECT_EQ(counts.numNonManifoldEdges, 0);
         EXPECT_EQ(counts.numInconsistentEdges, 0);
-        const int perRing = mesh == &anatomy().physicsMesh ? static_cast<int>(p.physicsNodesPerRing) : static_cast<int>(p.visualNodesPerRing);
+        const int perRing = mesh == &anatomy().physicsMesh ? static_cast<int>(p.physicsNodesPerRing)
+                                                           : static_cast<int>(p.visualNodesPerRing);
         EXPECT_EQ(counts.numBoundaryEdges, perRing) << "only the anal ring may be open";
     }
 }
@@ -52,7 +54,10 @@ TEST_F(ProceduralColon, NormalsPointOutOfTheLumen)
         // Sum of each corner's offset from its own ring centre.
         Eigen::Vector3d radial = Eigen::Vector3d::Zero();
         for (int k : t) {
-            radial += mesh.vertices.col(k) - sampleCentreline(anatomy().centreline, anatomy().physicsNodes[static_cast<std::size_t>(k)].arcLength).point;
+            radial += mesh.vertices.col(k) -
+                      sampleCentreline(anatomy().centreline,
+                                       anatomy().physicsNodes[static_cast<std::size_t>(k)].arcLength)
+                          .point;
         }
         ASSERT_GT(normal.dot(radial), 0.0);
     }
@@ -77,8 +82,9 @@ TEST_F(ProceduralColon, AttachmentsAndMesenteryRoots)
             EXPECT_EQ(info.attachment, Attachment::Retroperitoneal);
         }
         if (info.attachment == Attachment::Mesenteric) {
-            const double h = info.segment == Segment::Sigmoid ? p.sigmoidMesenteryHeight
-                : info.segment == Segment::Transverse ? p.transverseMesenteryHeight : p.mobileColonMesenteryHeight;
+            const double h = info.segment == Segment::Sigmoid      ? p.sigmoidMesenteryHeight
+                             : info.segment == Segment::Transverse ? p.transverseMesenteryHeight
+                                                                   : p.mobileColonMesenteryHeight;
             const double length = (info.mesenteryRoot - rest).norm();
             // Root is h + r posterior of the axis; the node lies on a circle of radius r around it.
             EXPECT_GE(length, h - 1e-9);
@@ -88,7 +94,8 @@ TEST_F(ProceduralColon, AttachmentsAndMesenteryRoots)
             EXPECT_EQ((info.mesenteryRoot - rest).norm(), 0.0);
         }
     }
-    EXPECT_EQ(numFixed, 2 * static_cast<int>(p.physicsNodesPerRing)) << "the first two rings are in the anal canal";
+    EXPECT_EQ(numFixed, 2 * static_cast<int>(p.physicsNodesPerRing))
+        << "the first two rings are in the anal canal";
 }
 
 struct MobilityCase {
@@ -112,13 +119,16 @@ TEST_P(Mobility, SegmentsHangWhereDeclared)
     bool cecum = false;
     bool ascendingTop = false;
     bool descending = false;
-    const double ascendingStart = p.rectumLength + p.sigmoidLength + p.descendingLength + p.splenicFlexureLength +
-        p.transverseLength + p.hepaticFlexureLength;
+    const double ascendingStart = p.rectumLength + p.sigmoidLength + p.descendingLength +
+                                  p.splenicFlexureLength + p.transverseLength + p.hepaticFlexureLength;
     for (const PhysicsNodeInfo& info : a.physicsNodes) {
         const bool mobile = info.attachment == Attachment::Mesenteric;
-        if (info.segment == Segment::Cecum) cecum |= mobile;
-        if (info.segment == Segment::Descending) descending |= mobile;
-        if (info.segment == Segment::Ascending && info.arcLength < ascendingStart + 0.03) ascendingTop |= mobile;
+        if (info.segment == Segment::Cecum)
+            cecum |= mobile;
+        if (info.segment == Segment::Descending)
+            descending |= mobile;
+        if (info.segment == Segment::Ascending && info.arcLength < ascendingStart + 0.03)
+            ascendingTop |= mobile;
     }
     EXPECT_EQ(cecum, GetParam().expectMobileCecum);
     EXPECT_EQ(ascendingTop, GetParam().expectMobileAscendingTop);
@@ -144,7 +154,8 @@ TEST_F(ProceduralColon, LandmarksSitInTheCecum)
     }
     const Landmark& valve = anatomy().landmarks[0];
     EXPECT_EQ(valve.name, "ileocecal_valve");
-    EXPECT_LT(valve.normal.x(), 0.0) << "the valve is on the medial (left, +x) wall, so its inward normal points right";
+    EXPECT_LT(valve.normal.x(), 0.0)
+        << "the valve is on the medial (left, +x) wall, so its inward normal points right";
 }
 
 TEST_F(ProceduralColon, NoRestNodePenetratesAnyOrgan)

@@ -9,7 +9,8 @@ namespace colonosim::params {
 namespace {
 
 struct Spring {
-    static constexpr ParameterSpec stiffnessSpec{"stiffness", "N/m", 100.0, 1.0, 1000.0, "spring constant", "test"};
+    static constexpr ParameterSpec stiffnessSpec{"stiffness",       "N/m", 100.0, 1.0, 1000.0,
+                                                 "spring constant", "test"};
     double stiffness = stiffnessSpec.defaultValue;
 };
 constexpr std::array<Field<Spring>, 1> kSpringFields{{{&Spring::stiffnessSpec, &Spring::stiffness}}};

@@ -39,7 +39,8 @@ void settle(ColonBody& colon, double seconds)
 
 const geometry::ColonAnatomy& defaultAnatomy()
 {
-    static const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(geometry::AnatomyParameters{});
+    static const geometry::ColonAnatomy anatomy =
+        geometry::buildProceduralColon(geometry::AnatomyParameters{});
     return anatomy;
 }
 
@@ -84,11 +85,13 @@ TEST(ColonBody, RefusesParametersOutsideTheirRange)
         (void)buildColonBody(defaultAnatomy(), tissue, EnvironmentParameters{}, {});
         FAIL() << "a 2 cm wall was accepted";
     } catch (const params::ParameterError& error) {
-        EXPECT_NE(std::string(error.what()).find("tissue.wallThickness = 0.02 m"), std::string::npos) << error.what();
+        EXPECT_NE(std::string(error.what()).find("tissue.wallThickness = 0.02 m"), std::string::npos)
+            << error.what();
     }
     EnvironmentParameters environment;
     environment.insufflationPressure = -5.0;
-    EXPECT_THROW((void)buildColonBody(defaultAnatomy(), TissueParameters{}, environment, {}), params::ParameterError);
+    EXPECT_THROW((void)buildColonBody(defaultAnatomy(), TissueParameters{}, environment, {}),
+                 params::ParameterError);
 }
 
 TEST(ColonBody, GravityPullsTowardsTheTableForEachPatientPosition)
@@ -104,13 +107,14 @@ TEST(ColonBody, GravityPullsTowardsTheTableForEachPatientPosition)
         EnvironmentParameters environment;
         environment.patientPosition = c.position;
         environment.insufflationPressure = 0.0;
-        ColonBody colon = buildColonBody(testing::makeTubeAnatomy(shortTube()), TissueParameters{}, environment,
-                                         {0.6, 0.95}, {true, true, false, {}});
+        ColonBody colon = buildColonBody(testing::makeTubeAnatomy(shortTube()), TissueParameters{},
+                                         environment, {0.6, 0.95}, {true, true, false, {}});
         const Positions rest = colon.body.positions();
         settle(colon, 0.5);
         const Eigen::Vector3d sag = (colon.body.positions() - rest).rowwise().mean();
         EXPECT_GT(sag.dot(c.down), 0.0) << patientPositionName(c.position);
-        EXPECT_GT(sag.dot(c.down), 0.9 * sag.norm()) << "sag points down for " << patientPositionName(c.position);
+        EXPECT_GT(sag.dot(c.down), 0.9 * sag.norm())
+            << "sag points down for " << patientPositionName(c.position);
     }
     EXPECT_THROW((void)parsePatientPosition("upside_down"), params::ParameterError);
 }
@@ -126,7 +130,8 @@ TEST(ColonBody, AdhesionsHoldTheirNodes)
         if (withAdhesion != 0) {
             options.adhesionNodes = {node};
         }
-        ColonBody colon = buildColonBody(anatomy, TissueParameters{}, EnvironmentParameters{}, {0.6, 0.95}, options);
+        ColonBody colon =
+            buildColonBody(anatomy, TissueParameters{}, EnvironmentParameters{}, {0.6, 0.95}, options);
         const Eigen::Vector3d rest = colon.body.positions().col(node);
         colon.body.applyExternalForce(node, Eigen::Vector3d(0.5, 0.0, 0.0));
         settle(colon, 0.5);
@@ -151,11 +156,11 @@ TEST(OrganConstraint, NoNodeStaysInsideAnOrgan)
     cavity.semiAxes = Eigen::Vector3d(0.2, 0.15, 0.35);
     const OrganConstraint constraint({liver, cavity});
     Positions x(3, 3);
-    x.col(0) = Eigen::Vector3d(0.0, 0.0, 0.19);   // inside the liver
-    x.col(1) = Eigen::Vector3d(0.25, 0.0, 0.0);   // outside the cavity
-    x.col(2) = Eigen::Vector3d(0.0, 0.1, -0.1);   // allowed
+    x.col(0) = Eigen::Vector3d(0.0, 0.0, 0.19);  // inside the liver
+    x.col(1) = Eigen::Vector3d(0.25, 0.0, 0.0);  // outside the cavity
+    x.col(2) = Eigen::Vector3d(0.0, 0.1, -0.1);  // allowed
     Velocities v = Velocities::Zero(3, 3);
-    v.col(0) = Eigen::Vector3d(0.0, 0.0, 0.3);    // moving into the liver
+    v.col(0) = Eigen::Vector3d(0.0, 0.0, 0.3);  // moving into the liver
     const std::vector<int> nodes{0, 1, 2};
     const Eigen::Vector3d untouched = x.col(2);
     EXPECT_EQ(constraint.project(nodes, x, v), 2);
@@ -189,7 +194,8 @@ TEST(ActiveRegion, FarRestingNodesSleepAndALoadWakesThem)
         simulation.advance();
     }
     EXPECT_GT(region.numAwake(), 16) << "the disturbance spreads to the neighbourhood";
-    EXPECT_THROW(ActiveRegion(colon.neighbours, SleepParameters{-1.0, 1e-3, 0.05, 3}), params::ParameterError);
+    EXPECT_THROW(ActiveRegion(colon.neighbours, SleepParameters{-1.0, 1e-3, 0.05, 3}),
+                 params::ParameterError);
 }
 
 TEST(ActiveRegion, ErrorAgainstTheFullSimulationIsSmall)
@@ -222,7 +228,8 @@ TEST(ActiveRegion, ErrorAgainstTheFullSimulationIsSmall)
         displacement = (colon.body.positions().col(loaded) - rest).norm();
     }
     const double error = (result[0] - result[1]).colwise().norm().maxCoeff();
-    EXPECT_LT(error, 0.01 * displacement) << "max error " << error << " m against a displacement of " << displacement;
+    EXPECT_LT(error, 0.01 * displacement)
+        << "max error " << error << " m against a displacement of " << displacement;
 }
 
 }  // namespace

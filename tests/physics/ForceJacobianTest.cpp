@@ -92,7 +92,8 @@ std::vector<TermCase> termCases()
          1e-3},
         {"gravity",
          [](const Positions&) {
-             return std::make_unique<Gravity>(Eigen::VectorXd::Constant(5, 3e-4), Eigen::Vector3d(9.81, 0, 0));
+             return std::make_unique<Gravity>(Eigen::VectorXd::Constant(5, 3e-4),
+                                              Eigen::Vector3d(9.81, 0, 0));
          },
          1e-3},
     };
@@ -123,7 +124,9 @@ TEST_P(ForceJacobian, StiffnessMatchesFiniteDifferences)
         term->addStiffnessProduct(x, dx, analytic);
         const double scale = std::max(1.0, numeric.cwiseAbs().maxCoeff());
         EXPECT_LT((numeric - analytic).cwiseAbs().maxCoeff(), 1e-6 * scale)
-            << GetParam().label << " trial " << trial << "\nnumeric\n" << numeric << "\nanalytic\n" << analytic;
+            << GetParam().label << " trial " << trial << "\nnumeric\n"
+            << numeric << "\nanalytic\n"
+            << analytic;
     }
 }
 
@@ -235,7 +238,8 @@ TEST(Mesentery, SlackTetherPullsNothingAndStiffensWhenStretched)
     const double large = Mesentery::tangentStiffness(law, 0.05, 0.2 * 0.05);
     EXPECT_NEAR(small, 10.0, 1e-3);
     EXPECT_NEAR(large, 40.0, 1e-9) << "at the stiffening strain the tangent stiffness has quadrupled";
-    EXPECT_DOUBLE_EQ(Mesentery::tangentStiffness(law, 0.05, 1.0), Mesentery::tangentStiffness(law, 0.05, 0.025))
+    EXPECT_DOUBLE_EQ(Mesentery::tangentStiffness(law, 0.05, 1.0),
+                     Mesentery::tangentStiffness(law, 0.05, 0.025))
         << "no further stiffening beyond the maximum strain";
 }
 

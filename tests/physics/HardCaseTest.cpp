@@ -28,7 +28,8 @@ TubeResolution smallTube()
 ColonBody makeTubeColon()
 {
     const geometry::ColonAnatomy anatomy = testing::makeTubeAnatomy(smallTube());
-    return buildColonBody(anatomy, TissueParameters{}, EnvironmentParameters{}, StiffnessCalibration{0.6, 0.95});
+    return buildColonBody(anatomy, TissueParameters{}, EnvironmentParameters{},
+                          StiffnessCalibration{0.6, 0.95});
 }
 
 struct RunResult {
@@ -87,7 +88,8 @@ TEST(HardCases, LesionTenThousandTimesStifferThanTheWall)
     EXPECT_TRUE(r.finite);
     EXPECT_LT(r.maxEnergy, kEnergyBound);
     EXPECT_NE(r.plan.find("backward_euler"), std::string::npos)
-        << "a 1e4 stiffer lesion needs ~100x the substeps; the scene must fall back to the implicit integrator: "
+        << "a 1e4 stiffer lesion needs ~100x the substeps; the scene must fall back to the implicit "
+           "integrator: "
         << r.plan;
     EXPECT_EQ(r.rejected, 0);
 }
@@ -135,7 +137,8 @@ TEST(HardCases, SuddenImpactAtHalfAMetrePerSecond)
     }
     EXPECT_TRUE(colon.body.positions().allFinite());
     EXPECT_LT(maxEnergy, impactEnergy + 0.01) << "energy beyond the impact's and gravity's";
-    EXPECT_LT(colon.body.kineticEnergy(), 0.05 * impactEnergy) << "the impact must be damped out within 0.5 s";
+    EXPECT_LT(colon.body.kineticEnergy(), 0.05 * impactEnergy)
+        << "the impact must be damped out within 0.5 s";
     EXPECT_EQ(simulation.rejectedSteps(), 0);
 }
 
@@ -182,8 +185,10 @@ TEST(HardCases, EveryCornerOfTheDeclaredRangesIsStableAtTheLoopRate)
     // wall, so the bound here is 0.5 J; an unstable run exceeds it by orders
     // of magnitude within milliseconds.
     constexpr double kCornerEnergyBound = 0.5;  // J
-    for (const double modulus : {TissueParameters::youngModulusSpec.minValue, TissueParameters::youngModulusSpec.maxValue}) {
-        for (const double thickness : {TissueParameters::thicknessSpec.minValue, TissueParameters::thicknessSpec.maxValue}) {
+    for (const double modulus :
+         {TissueParameters::youngModulusSpec.minValue, TissueParameters::youngModulusSpec.maxValue}) {
+        for (const double thickness :
+             {TissueParameters::thicknessSpec.minValue, TissueParameters::thicknessSpec.maxValue}) {
             for (const double beta : {0.0, TissueParameters::dampingTimeSpec.maxValue}) {
                 TissueParameters tissue;
                 tissue.wallYoungModulus = modulus;

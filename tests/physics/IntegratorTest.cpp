@@ -2,9 +2,9 @@
 // SOFA's habit): one node of mass m on an anchor spring k with damping c.
 // x(t) = e^{-zeta w t} (x0 cos(wd t) + (zeta w x0 / wd) sin(wd t)), v(0) = 0.
 
+#include "simcore/physics/Integrator.h"
 #include "simcore/physics/AnchorSprings.h"
 #include "simcore/physics/BackwardEuler.h"
-#include "simcore/physics/Integrator.h"
 #include "simcore/physics/TissueBody.h"
 
 #include <gtest/gtest.h>
@@ -33,7 +33,8 @@ TissueBody makeOscillator(double zeta)
 double exact(double zeta, double t)
 {
     const double wd = kOmega * std::sqrt(1.0 - zeta * zeta);
-    return std::exp(-zeta * kOmega * t) * (kX0 * std::cos(wd * t) + zeta * kOmega * kX0 / wd * std::sin(wd * t));
+    return std::exp(-zeta * kOmega * t) *
+           (kX0 * std::cos(wd * t) + zeta * kOmega * kX0 / wd * std::sin(wd * t));
 }
 
 /// Largest error over the trajectory, sampled every 10 ms (a common grid

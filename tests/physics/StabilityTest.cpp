@@ -74,7 +74,8 @@ SmallTube makeSmallTube(double dampingTime)
     const geometry::TriangleMesh mesh = makeStraightTube(tube);
     TissueParameters tissue;
     tissue.dampingTime = dampingTime;
-    const std::vector<Eigen::Vector3d> axis(static_cast<size_t>(mesh.numVertices()), Eigen::Vector3d::UnitZ());
+    const std::vector<Eigen::Vector3d> axis(static_cast<size_t>(mesh.numVertices()),
+                                            Eigen::Vector3d::UnitZ());
     SmallTube t{TissueBody(mesh.vertices, wallNodeMasses(mesh, tissue))};
     auto springs = std::make_unique<SpringSet>();
     addWallSprings(mesh, axis, tissue, StiffnessCalibration{}, *springs);
@@ -113,8 +114,8 @@ TEST(StabilityBound, GershgorinBoundsTheExactHighestFrequency)
     SmallTube t = makeSmallTube(0.0);
     const StabilityEstimate estimate = estimateStability(t.body);
     const double exact = exactOmegaMax(t.body);
-    std::cout << "omega_max: Gershgorin " << estimate.omegaMax << " rad/s, exact " << exact << " rad/s (ratio "
-              << estimate.omegaMax / exact << ")\n";
+    std::cout << "omega_max: Gershgorin " << estimate.omegaMax << " rad/s, exact " << exact
+              << " rad/s (ratio " << estimate.omegaMax / exact << ")\n";
     EXPECT_GE(estimate.omegaMax, exact);
     EXPECT_LT(estimate.omegaMax, 3.0 * exact) << "bound uselessly loose";
     EXPECT_NEAR(powerIterationOmegaMax(t.body, 3000), exact, 0.02 * exact);

@@ -33,7 +33,7 @@ inline geometry::ColonAnatomy makeTubeAnatomy(const TubeResolution& tube, int an
             info.segment = geometry::Segment::Sigmoid;
             info.arcLength = r * tube.ringSpacing;
             info.angle = 2.0 * M_PI * k / tube.nodesPerRing;
-            info.attachment = r == 0                  ? geometry::Attachment::Fixed
+            info.attachment = r == 0               ? geometry::Attachment::Fixed
                               : r <= anchoredRings ? geometry::Attachment::Retroperitoneal
                                                    : geometry::Attachment::Mesenteric;
             info.mesenteryRoot = Eigen::Vector3d(0.0, tube.radius + mesenteryHeight, info.arcLength);

@@ -15,11 +15,12 @@ int runBench(std::span<char* const> args)
 {
     const CommandLine line(args, {"--quick", "--help"}, {"--out"});
     if (line.has("--help")) {
-        std::cout << "usage: colonosim bench [--quick] --out DIR\n"
-                     "Speed versus error of every integrator on the bench scene, the Bullet btSoftBody peer,\n"
-                     "the active region's speed-up and error, step and mapping rates. Writes\n"
-                     "DIR/speed_vs_error.csv, DIR/speed_vs_error.svg and DIR/summary.json.\n"
-                     "  --quick   short runs (about a minute) for smoke tests\n";
+        std::cout
+            << "usage: colonosim bench [--quick] --out DIR\n"
+               "Speed versus error of every integrator on the bench scene, the Bullet btSoftBody peer,\n"
+               "the active region's speed-up and error, step and mapping rates. Writes\n"
+               "DIR/speed_vs_error.csv, DIR/speed_vs_error.svg and DIR/summary.json.\n"
+               "  --quick   short runs (about a minute) for smoke tests\n";
         return 0;
     }
     if (!line.positional().empty()) {

@@ -6,7 +6,8 @@
 
 namespace colonosim::cli {
 
-CommandLine::CommandLine(std::span<char* const> args, std::vector<std::string> flags, std::vector<std::string> options)
+CommandLine::CommandLine(std::span<char* const> args, std::vector<std::string> flags,
+                         std::vector<std::string> options)
 {
     for (size_t i = 0; i < args.size(); ++i) {
         const std::string arg = args[i];
@@ -58,8 +59,8 @@ double CommandLine::number(const std::string& option, double fallback, double mi
     }
     if (used != text->size() || !(parsed >= min && parsed <= max)) {
         std::ostringstream out;
-        out << option << " = " << *text << " is not a number in the allowed range [" << min << ", " << max << "] "
-            << unit;
+        out << option << " = " << *text << " is not a number in the allowed range [" << min << ", " << max
+            << "] " << unit;
         throw UsageError(out.str());
     }
     return parsed;

@@ -21,7 +21,8 @@ class CommandLine {
 public:
     /// `args` excludes the program and subcommand names. `flags` take no
     /// value; `options` take one. Unknown --names are refused.
-    CommandLine(std::span<char* const> args, std::vector<std::string> flags, std::vector<std::string> options);
+    CommandLine(std::span<char* const> args, std::vector<std::string> flags,
+                std::vector<std::string> options);
 
     [[nodiscard]] bool has(const std::string& flag) const;
     [[nodiscard]] std::optional<std::string> value(const std::string& option) const;

@@ -57,11 +57,12 @@ int runDemo(std::span<char* const> args)
 {
     const CommandLine line(args, {"--json", "--help"}, {"--duration", "--integrator"});
     if (line.has("--help")) {
-        std::cout << "usage: colonosim demo [--duration S] [--integrator NAME] [--json]\n"
-                     "Headless demonstration: procedural colon, wall calibration, settling under gravity and\n"
-                     "insufflation, a 2 N push on the sigmoid wall, visual-mesh mapping.\n"
-                     "  --duration S      simulated seconds, 0.05-60 (default 0.5)\n"
-                     "  --integrator NAME explicit_euler, symplectic_euler (default), rk4, backward_euler\n";
+        std::cout
+            << "usage: colonosim demo [--duration S] [--integrator NAME] [--json]\n"
+               "Headless demonstration: procedural colon, wall calibration, settling under gravity and\n"
+               "insufflation, a 2 N push on the sigmoid wall, visual-mesh mapping.\n"
+               "  --duration S      simulated seconds, 0.05-60 (default 0.5)\n"
+               "  --integrator NAME explicit_euler, symplectic_euler (default), rk4, backward_euler\n";
         return 0;
     }
     const double duration = line.number("--duration", 0.5, 0.05, 60.0, "s");
@@ -74,15 +75,16 @@ int runDemo(std::span<char* const> args)
     const geometry::AnatomyParameters anatomyParameters;
     const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(anatomyParameters);
     log << "colon: " << anatomy.centreline.length() << " m, " << anatomy.physicsMesh.numVertices()
-        << " physics nodes, " << anatomy.visualMesh.numVertices() << " visual vertices, " << anatomy.organs.size()
-        << " organs (" << seconds(start) << " s)\n";
+        << " physics nodes, " << anatomy.visualMesh.numVertices() << " visual vertices, "
+        << anatomy.organs.size() << " organs (" << seconds(start) << " s)\n";
 
     const physics::TissueParameters tissue;
     const physics::EnvironmentParameters environment;
     physics::TubeResolution tube;
     tube.nodesPerRing = static_cast<int>(anatomyParameters.physicsNodesPerRing);
     tube.radius = 0.5 * anatomyParameters.diameter(geometry::Segment::Sigmoid);
-    tube.ringSpacing = anatomyParameters.totalLength() * tube.nodesPerRing / anatomyParameters.physicsTargetNodeCount;
+    tube.ringSpacing =
+        anatomyParameters.totalLength() * tube.nodesPerRing / anatomyParameters.physicsTargetNodeCount;
     const physics::CalibrationReport calibration = physics::calibrateWallStiffness(tube, tissue);
     log << "wall calibration: axial x" << calibration.factors.axial << ", circumferential x"
         << calibration.factors.circumferential << " (residual " << calibration.axialStiffnessError << ", "
@@ -96,11 +98,10 @@ int runDemo(std::span<char* const> args)
 
     const physics::Positions rest = colon.body.positions();
     const int pushed = sigmoidNode(anatomy);
-    const Eigen::Vector3d pushCentre =
-        anatomy.centreline.points[static_cast<size_t>(std::lower_bound(anatomy.centreline.arcLength.begin(),
-                                                                       anatomy.centreline.arcLength.end(),
-                                                                       anatomy.physicsNodes[static_cast<size_t>(pushed)].arcLength) -
-                                                      anatomy.centreline.arcLength.begin())];
+    const Eigen::Vector3d pushCentre = anatomy.centreline.points[static_cast<size_t>(
+        std::lower_bound(anatomy.centreline.arcLength.begin(), anatomy.centreline.arcLength.end(),
+                         anatomy.physicsNodes[static_cast<size_t>(pushed)].arcLength) -
+        anatomy.centreline.arcLength.begin())];
     const int steps = static_cast<int>(std::lround(duration / policy.loopStep));
     start = Clock::now();
     for (int s = 0; s < steps; ++s) {
@@ -136,8 +137,9 @@ int runDemo(std::span<char* const> args)
     log << "simulated " << duration << " s in " << steps << " loop steps: " << wall << " s wall ("
         << duration / wall << "x real time); " << region.numAwake() << " of " << colon.body.numNodes()
         << " nodes awake at the end\n"
-        << "pushed node moved " << pushDisplacement * 1e3 << " mm; largest displacement " << maxDisplacement * 1e3
-        << " mm; mesentery strain up to " << colon.mesentery->maxStrain(colon.body.positions()) << "\n"
+        << "pushed node moved " << pushDisplacement * 1e3 << " mm; largest displacement "
+        << maxDisplacement * 1e3 << " mm; mesentery strain up to "
+        << colon.mesentery->maxStrain(colon.body.positions()) << "\n"
         << "rejected steps: " << simulation.rejectedSteps() << '\n'
         << "visual mapping: built in " << mappingBuild << " s, applied in " << mappingApply * 1e3 << " ms\n";
     for (const auto& rejection : simulation.rejections()) {

@@ -18,8 +18,9 @@ int runMesh(std::span<char* const> args)
 {
     const CommandLine line(args, {"--json", "--help"}, {});
     if (line.has("--help")) {
-        std::cout << "usage: colonosim mesh inspect FILE [--json]\n"
-                     "Imports an OBJ, STL or PLY colon surface (metres), reports repairs and its centreline.\n";
+        std::cout
+            << "usage: colonosim mesh inspect FILE [--json]\n"
+               "Imports an OBJ, STL or PLY colon surface (metres), reports repairs and its centreline.\n";
         return 0;
     }
     if (line.positional().size() != 2 || line.positional()[0] != "inspect") {
@@ -41,7 +42,8 @@ int runMesh(std::span<char* const> args)
         std::cout << line.positional()[1] << ": " << imported.mesh.numVertices() << " vertices, "
                   << imported.mesh.numTriangles() << " triangles\n"
                   << "repairs: " << imported.report.summary() << '\n'
-                  << "centreline: " << centreline.length() << " m over " << centreline.numPoints() << " points\n";
+                  << "centreline: " << centreline.length() << " m over " << centreline.numPoints()
+                  << " points\n";
     }
     return 0;
 }
