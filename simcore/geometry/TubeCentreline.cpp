@@ -2,152 +2,27 @@
 
 #include "simcore/geometry/AnatomyParameters.h"
 #include "simcore/geometry/CentrelineSampling.h"
+#include "simcore/geometry/SurfaceGraph.h"
+#include "simcore/geometry/TubeSections.h"
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <limits>
-#include <queue>
 #include <utility>
 
 namespace colonosim::geometry {
 
 namespace {
 
+using surface::argmaxFinite;
+using surface::boundaryLoops;
+using surface::buildGraph;
+using surface::EdgeGraph;
+using surface::geodesic;
+using surface::levelSets;
+using surface::Section;
+
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-/// Undirected edge graph in compressed rows, plus the boundary edges.
-struct EdgeGraph {
-    std::vector<int> offset;  ///< numVertices + 1
-    std::vector<int> neighbour;
-    std::vector<double> length;
-    std::vector<std::pair<int, int>> boundary;  ///< edges used by exactly one triangle
-    double meanEdge = 0.0;
-};
-
-EdgeGraph buildGraph(const TriangleMesh& mesh)
-{
-    const auto numV = static_cast<std::size_t>(mesh.numVertices());
-    std::vector<std::pair<int, int>> halfEdges;
-    halfEdges.reserve(3 * mesh.triangles.size());
-    for (const auto& t : mesh.triangles) {
-        for (std::size_t k = 0; k < 3; ++k) {
-            const int a = t[k], b = t[(k + 1) % 3];
-            if (a != b)
-                halfEdges.emplace_back(std::min(a, b), std::max(a, b));
-        }
-    }
-    std::sort(halfEdges.begin(), halfEdges.end());
-    EdgeGraph g;
-    std::vector<std::pair<int, int>> edges;
-    for (std::size_t i = 0; i < halfEdges.size();) {
-        std::size_t j = i;
-        while (j < halfEdges.size() && halfEdges[j] == halfEdges[i])
-            ++j;
-        edges.push_back(halfEdges[i]);
-        if (j - i == 1)
-            g.boundary.push_back(halfEdges[i]);
-        i = j;
-    }
-    g.offset.assign(numV + 1, 0);
-    for (const auto& [a, b] : edges) {
-        ++g.offset[static_cast<std::size_t>(a) + 1];
-        ++g.offset[static_cast<std::size_t>(b) + 1];
-    }
-    for (std::size_t v = 0; v < numV; ++v)
-        g.offset[v + 1] += g.offset[v];
-    g.neighbour.resize(2 * edges.size());
-    g.length.resize(2 * edges.size());
-    std::vector<int> fill(g.offset.begin(), g.offset.end() - 1);
-    double sum = 0.0;
-    for (const auto& [a, b] : edges) {
-        const double len = (mesh.vertices.col(a) - mesh.vertices.col(b)).norm();
-        sum += len;
-        const auto ia = static_cast<std::size_t>(fill[static_cast<std::size_t>(a)]++);
-        const auto ib = static_cast<std::size_t>(fill[static_cast<std::size_t>(b)]++);
-        g.neighbour[ia] = b;
-        g.length[ia] = len;
-        g.neighbour[ib] = a;
-        g.length[ib] = len;
-    }
-    g.meanEdge = edges.empty() ? 0.0 : sum / static_cast<double>(edges.size());
-    return g;
-}
-
-/// Dijkstra over the edge graph from several sources: O(E log V).
-std::vector<double> geodesic(const EdgeGraph& g, const std::vector<int>& sources)
-{
-    std::vector<double> dist(g.offset.size() - 1, kInf);
-    using Item = std::pair<double, int>;
-    std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
-    for (int s : sources) {
-        dist[static_cast<std::size_t>(s)] = 0.0;
-        queue.push({0.0, s});
-    }
-    while (!queue.empty()) {
-        const auto [d, v] = queue.top();
-        queue.pop();
-        if (d > dist[static_cast<std::size_t>(v)])
-            continue;
-        for (int e = g.offset[static_cast<std::size_t>(v)]; e < g.offset[static_cast<std::size_t>(v) + 1];
-             ++e) {
-            const auto w = static_cast<std::size_t>(g.neighbour[static_cast<std::size_t>(e)]);
-            const double dw = d + g.length[static_cast<std::size_t>(e)];
-            if (dw < dist[w]) {
-                dist[w] = dw;
-                queue.push({dw, static_cast<int>(w)});
-            }
-        }
-    }
-    return dist;
-}
-
-int argmaxFinite(const std::vector<double>& d)
-{
-    int best = 0;
-    double value = -1.0;
-    for (std::size_t v = 0; v < d.size(); ++v) {
-        if (std::isfinite(d[v]) && d[v] > value) {
-            value = d[v];
-            best = static_cast<int>(v);
-        }
-    }
-    return best;
-}
-
-/// Open boundary loops (connected sets of boundary edges), longest first.
-std::vector<std::vector<int>> boundaryLoops(const EdgeGraph& g, std::size_t numV)
-{
-    std::vector<std::vector<int>> link(numV);
-    for (const auto& [a, b] : g.boundary) {
-        link[static_cast<std::size_t>(a)].push_back(b);
-        link[static_cast<std::size_t>(b)].push_back(a);
-    }
-    std::vector<char> used(numV, 0);
-    std::vector<std::vector<int>> loops;
-    for (std::size_t start = 0; start < numV; ++start) {
-        if (link[start].empty() || used[start] != 0)
-            continue;
-        std::vector<int> loop;
-        std::vector<int> stack{static_cast<int>(start)};
-        used[start] = 1;
-        while (!stack.empty()) {
-            const int v = stack.back();
-            stack.pop_back();
-            loop.push_back(v);
-            for (int w : link[static_cast<std::size_t>(v)]) {
-                if (used[static_cast<std::size_t>(w)] == 0) {
-                    used[static_cast<std::size_t>(w)] = 1;
-                    stack.push_back(w);
-                }
-            }
-        }
-        loops.push_back(std::move(loop));
-    }
-    std::stable_sort(loops.begin(), loops.end(),
-                     [](const auto& a, const auto& b) { return a.size() > b.size(); });
-    return loops;
-}
 
 Eigen::Vector3d centroid(const TriangleMesh& mesh, const std::vector<int>& vertices)
 {
@@ -163,73 +38,6 @@ double meanDistance(const TriangleMesh& mesh, const std::vector<int>& vertices, 
     for (int v : vertices)
         sum += (mesh.vertices.col(v) - c).norm();
     return sum / static_cast<double>(std::max<std::size_t>(1, vertices.size()));
-}
-
-/// One cross-section: the iso-contour of a scalar field at one level.
-struct Section {
-    Eigen::Vector3d centre = Eigen::Vector3d::Zero();  ///< length-weighted centroid of the contour
-    double radius = 0.0;  ///< length-weighted mean distance of the contour from the centre
-    double contourLength = 0.0;
-};
-
-/// Iso-contours of the piecewise-linear `field` at levels first + k step,
-/// k = 0..count-1 (marching triangles). Each triangle visits only the levels
-/// inside its value range, so the cost is O(F + number of contour segments).
-std::vector<Section> levelSets(const TriangleMesh& mesh, const std::vector<double>& field, double first,
-                               double step, int count)
-{
-    struct Piece {
-        int level;
-        Eigen::Vector3d p, q;
-    };
-    std::vector<Piece> pieces;
-    std::vector<Section> sections(static_cast<std::size_t>(count));
-    for (const auto& t : mesh.triangles) {
-        const double f[3] = {field[static_cast<std::size_t>(t[0])], field[static_cast<std::size_t>(t[1])],
-                             field[static_cast<std::size_t>(t[2])]};
-        if (!std::isfinite(f[0]) || !std::isfinite(f[1]) || !std::isfinite(f[2]))
-            continue;
-        const double lo = std::min({f[0], f[1], f[2]});
-        const double hi = std::max({f[0], f[1], f[2]});
-        // Levels l with lo < l <= hi: vertices with f >= l are "above".
-        int k0 = std::max(0, static_cast<int>(std::ceil((lo - first) / step)));
-        if (first + k0 * step <= lo)
-            ++k0;
-        const int k1 = std::min(count - 1, static_cast<int>(std::floor((hi - first) / step)));
-        for (int k = k0; k <= k1; ++k) {
-            const double level = first + k * step;
-            Eigen::Vector3d ends[2];
-            int n = 0;
-            for (std::size_t e = 0; e < 3 && n < 2; ++e) {
-                const std::size_t e1 = (e + 1) % 3;
-                if ((f[e] >= level) != (f[e1] >= level)) {
-                    const double u = (level - f[e]) / (f[e1] - f[e]);
-                    ends[n++] = (1.0 - u) * mesh.vertices.col(t[e]) + u * mesh.vertices.col(t[e1]);
-                }
-            }
-            if (n < 2)
-                continue;
-            const double len = (ends[1] - ends[0]).norm();
-            Section& s = sections[static_cast<std::size_t>(k)];
-            s.centre += 0.5 * len * (ends[0] + ends[1]);
-            s.contourLength += len;
-            pieces.push_back({k, ends[0], ends[1]});
-        }
-    }
-    for (Section& s : sections) {
-        if (s.contourLength > 0.0)
-            s.centre /= s.contourLength;
-    }
-    for (const Piece& piece : pieces) {
-        Section& s = sections[static_cast<std::size_t>(piece.level)];
-        const double len = (piece.q - piece.p).norm();
-        s.radius += 0.5 * len * ((piece.p - s.centre).norm() + (piece.q - s.centre).norm());
-    }
-    for (Section& s : sections) {
-        if (s.contourLength > 0.0)
-            s.radius /= s.contourLength;
-    }
-    return sections;
 }
 
 std::vector<double> cumulative(const std::vector<Eigen::Vector3d>& p)
