@@ -7,6 +7,7 @@
 
 #include "bench/report/BenchScene.h"
 #include "bench/report/StepRate.h"
+#include "simcore/physics/ActiveRegion.h"
 #include "simcore/physics/TissueSimulation.h"
 
 #include <benchmark/benchmark.h>
@@ -94,5 +95,33 @@ BENCHMARK(BM_LoopStep)
     ->Arg(static_cast<int>(IntegratorKind::SymplecticEuler))
     ->Arg(static_cast<int>(IntegratorKind::BackwardEuler))
     ->Unit(benchmark::kMicrosecond);
+
+/// The same loop step with the active region: the colon settles for 0.5 s
+/// (untimed) so that resting nodes fall asleep, then the standard push is
+/// applied and each timed iteration is one loop step with the load held.
+/// The figure depends on how far the disturbance has spread, so it is an
+/// average over the benchmark's run (about a second of simulated time).
+void BM_LoopStepActiveRegion(benchmark::State& state)
+{
+    const colonosim::bench::BenchScene& s = scene();
+    colonosim::physics::ColonBody colon = s.makeBody();
+    colonosim::physics::TissueSimulation simulation(colon.body, colonosim::physics::SteppingPolicy{});
+    colonosim::physics::ActiveRegion region(colon.neighbours, colonosim::physics::SleepParameters{});
+    simulation.setActiveRegion(&region);
+    for (int step = 0; step < 500; ++step) {
+        simulation.advance();
+    }
+    double awake = 0.0;
+    for (auto _ : state) {
+        colon.body.clearExternalForces();
+        s.load.apply(colon.body, s.load.rampTime);
+        benchmark::DoNotOptimize(simulation.advance());
+        awake += region.numAwake();
+    }
+    state.SetItemsProcessed(state.iterations());
+    state.counters["awake_fraction"] =
+        awake / static_cast<double>(state.iterations()) / static_cast<double>(colon.body.numNodes());
+}
+BENCHMARK(BM_LoopStepActiveRegion)->Unit(benchmark::kMicrosecond)->MinTime(1.0);
 
 }  // namespace
