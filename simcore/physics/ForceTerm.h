@@ -66,6 +66,9 @@ public:
     /// The set of awake nodes changed: terms may skip elements whose nodes
     /// all sleep. `awake` has one entry per node.
     virtual void onActiveSetChanged(const std::vector<std::uint8_t>& awake) { (void)awake; }
+    /// Node masses changed or nodes were appended (kg, one per node). Terms
+    /// that scale with mass (gravity, drag) keep their copy in step.
+    virtual void onMassesChanged(const Eigen::VectorXd& masses) { (void)masses; }
 };
 
 }  // namespace colonosim::physics

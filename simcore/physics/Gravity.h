@@ -34,6 +34,7 @@ public:
     void addDampingProduct(const Positions&, const Eigen::Matrix3Xd&, Eigen::Matrix3Xd&) const override {}
     void addStiffnessBound(const Positions&, Eigen::VectorXd&, Eigen::VectorXd&) const override {}
     [[nodiscard]] double potentialEnergy(const Positions& x) const override;
+    void onMassesChanged(const Eigen::VectorXd& masses) override { m_mass = masses; }
 
 private:
     Eigen::VectorXd m_mass;

@@ -42,6 +42,7 @@ int TissueBody::addNode(const Eigen::Vector3d& position, double mass)
     m_integrated.push_back(static_cast<int>(n));
     for (auto& term : m_terms) {
         term->onActiveSetChanged(m_awake);
+        term->onMassesChanged(m_mass);
     }
     return static_cast<int>(n);
 }
@@ -53,6 +54,9 @@ void TissueBody::setMass(int node, double mass)
     }
     m_mass[node] = mass;
     m_inverseMass[node] = 1.0 / mass;
+    for (auto& term : m_terms) {
+        term->onMassesChanged(m_mass);
+    }
 }
 
 void TissueBody::setFixed(int node, bool fixed)
@@ -81,6 +85,7 @@ void TissueBody::clearExternalForces()
 ForceTerm& TissueBody::addForceTerm(std::unique_ptr<ForceTerm> term)
 {
     term->onActiveSetChanged(m_awake);
+    term->onMassesChanged(m_mass);
     m_terms.push_back(std::move(term));
     return *m_terms.back();
 }

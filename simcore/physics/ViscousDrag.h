@@ -37,6 +37,7 @@ public:
         cRow += m_rate * m_mass;
     }
     [[nodiscard]] double potentialEnergy(const Positions&) const override { return 0.0; }
+    void onMassesChanged(const Eigen::VectorXd& masses) override { m_mass = masses; }
 
 private:
     Eigen::VectorXd m_mass;
