@@ -9,11 +9,13 @@ cd "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")"
 
 # System dependencies, all from Debian 12 (bookworm) packages.
 # libqt6opengl6-dev and xauth are only Recommends of other packages, so they are named here.
+# zlib1g-dev: assimp's CMake targets link /usr/lib/x86_64-linux-gnu/libz.so, but libassimp-dev
+# does not depend on the package that ships it.
 PACKAGES=(
     build-essential cmake ninja-build pkg-config git
     libeigen3-dev libbullet-dev libsqlite3-dev
     qt6-base-dev libqt6opengl6-dev libqt6sql6-sqlite qt6-charts-dev qt6-svg-dev
-    libtinyxml2-dev libosmesa6-dev libassimp-dev nlohmann-json3-dev
+    libtinyxml2-dev libosmesa6-dev libassimp-dev zlib1g-dev nlohmann-json3-dev
     libgtest-dev libgmock-dev libbenchmark-dev
     libsodium-dev libzstd-dev
     xvfb xauth poppler-utils
