@@ -17,3 +17,6 @@ endif()
 if(COLONOSIM_BUILD_BENCH)
   find_package(benchmark REQUIRED)
 endif()
+
+# zstd: compression of the recorded input traces. No CMake package in Debian 12.
+pkg_check_modules(ZSTD REQUIRED IMPORTED_TARGET libzstd)
