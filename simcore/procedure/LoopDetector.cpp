@@ -1,0 +1,222 @@
+#include "simcore/procedure/LoopDetector.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+namespace colonosim::procedure {
+
+using geometry::Segment;
+
+std::string_view loopName(LoopKind kind)
+{
+    switch (kind) {
+    case LoopKind::None: return "none";
+    case LoopKind::N: return "N";
+    case LoopKind::Alpha: return "alpha";
+    case LoopKind::ReverseAlpha: return "reverse_alpha";
+    case LoopKind::GammaDeepTransverse: return "gamma_deep_transverse";
+    case LoopKind::ReverseSplenic: return "reverse_splenic";
+    }
+    return "none";
+}
+
+namespace {
+/// The anterior view: the patient's left (+x) on the viewer's right, up (+z) up.
+Eigen::Vector2d coronal(const Eigen::Vector3d& p)
+{
+    return {p.x(), p.z()};
+}
+
+double cross2(const Eigen::Vector2d& a, const Eigen::Vector2d& b)
+{
+    return a.x() * b.y() - a.y() * b.x();
+}
+
+bool segmentsCross(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
+                   const Eigen::Vector2d& d)
+{
+    const double d1 = cross2(b - a, c - a);
+    const double d2 = cross2(b - a, d - a);
+    const double d3 = cross2(d - c, a - c);
+    const double d4 = cross2(d - c, b - c);
+    return d1 * d2 < 0.0 && d3 * d4 < 0.0;
+}
+}  // namespace
+
+int coronalCrossings(const Eigen::Matrix3Xd& polyline)
+{
+    const Eigen::Index n = polyline.cols();
+    int crossings = 0;
+    for (Eigen::Index i = 0; i + 1 < n; ++i) {
+        for (Eigen::Index j = i + 2; j + 1 < n; ++j) {
+            if (segmentsCross(coronal(polyline.col(i)), coronal(polyline.col(i + 1)),
+                              coronal(polyline.col(j)), coronal(polyline.col(j + 1)))) {
+                ++crossings;
+            }
+        }
+    }
+    return crossings;
+}
+
+double coronalTurning(const Eigen::Matrix3Xd& polyline)
+{
+    double turning = 0.0;
+    for (Eigen::Index i = 1; i + 1 < polyline.cols(); ++i) {
+        const Eigen::Vector2d a = coronal(polyline.col(i)) - coronal(polyline.col(i - 1));
+        const Eigen::Vector2d b = coronal(polyline.col(i + 1)) - coronal(polyline.col(i));
+        if (a.squaredNorm() > 0.0 && b.squaredNorm() > 0.0) {
+            turning += std::atan2(cross2(a, b), a.dot(b));
+        }
+    }
+    return turning;
+}
+
+LoopDetector::LoopDetector(const geometry::Centreline& colon, double excessThreshold)
+    : m_colon(colon), m_threshold(excessThreshold)
+{}
+
+double LoopDetector::locate(const Eigen::Vector3d& p) const
+{
+    return locateNear(p, -std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity());
+}
+
+double LoopDetector::locateNear(const Eigen::Vector3d& p, double from, double to) const
+{
+    const auto begin = std::lower_bound(m_colon.arcLength.begin(), m_colon.arcLength.end(), from);
+    const auto end = std::upper_bound(begin, m_colon.arcLength.end(), to);
+    double best = std::numeric_limits<double>::infinity();
+    double bestS = begin == m_colon.arcLength.end() ? m_colon.length() : *begin;
+    for (auto it = begin; it != end; ++it) {
+        const auto k = static_cast<size_t>(it - m_colon.arcLength.begin());
+        const double d2 = (m_colon.points[k] - p).squaredNorm();
+        if (d2 < best) {
+            best = d2;
+            bestS = *it;
+        }
+    }
+    return bestS;
+}
+
+Eigen::Matrix3Xd LoopDetector::colonPath(double from, double to) const
+{
+    constexpr double kSpacing = 0.01;  // m
+    const auto count = static_cast<Eigen::Index>(std::max(2.0, std::ceil((to - from) / kSpacing) + 1.0));
+    Eigen::Matrix3Xd path(3, count);
+    for (Eigen::Index k = 0; k < count; ++k) {
+        const double s = from + (to - from) * static_cast<double>(k) / static_cast<double>(count - 1);
+        const auto it = std::lower_bound(m_colon.arcLength.begin(), m_colon.arcLength.end(), s);
+        const auto index = static_cast<size_t>(std::min<std::ptrdiff_t>(
+            it - m_colon.arcLength.begin(), static_cast<std::ptrdiff_t>(m_colon.points.size()) - 1));
+        path.col(k) = m_colon.points[index];
+    }
+    return path;
+}
+
+LoopKind LoopDetector::update(const Eigen::Matrix3Xd& shaft, double insertion)
+{
+    const Eigen::Index n = shaft.cols();
+    if (n < 2 || m_colon.points.size() < 2) {
+        m_current = LoopKind::None;
+        return m_current;
+    }
+    // Each node is located near its predecessor along the colon (topological:
+    // a part of the colon that is close in space but far along it, such as the
+    // transverse colon over a sigmoid loop, is never a candidate).
+    std::vector<double> s(static_cast<size_t>(n));
+    std::vector<Segment> segment(static_cast<size_t>(n));
+    for (Eigen::Index i = 0; i < n; ++i) {
+        const double previous = i == 0 ? 0.0 : s[static_cast<size_t>(i - 1)];
+        s[static_cast<size_t>(i)] =
+            locateNear(shaft.col(i), previous - kBackWindow, previous + kForwardWindow);
+        const auto it =
+            std::lower_bound(m_colon.arcLength.begin(), m_colon.arcLength.end(), s[static_cast<size_t>(i)]);
+        const auto k = static_cast<size_t>(std::min<std::ptrdiff_t>(
+            it - m_colon.arcLength.begin(), static_cast<std::ptrdiff_t>(m_colon.segment.size()) - 1));
+        segment[static_cast<size_t>(i)] = m_colon.segment[k];
+    }
+    // Excess shaft per segment.
+    std::array<double, geometry::kNumSegments> shaftLength{};
+    std::array<double, geometry::kNumSegments> lo{};
+    std::array<double, geometry::kNumSegments> hi{};
+    lo.fill(std::numeric_limits<double>::infinity());
+    hi.fill(-std::numeric_limits<double>::infinity());
+    for (Eigen::Index i = 0; i < n; ++i) {
+        const auto g = static_cast<size_t>(segment[static_cast<size_t>(i)]);
+        lo[g] = std::min(lo[g], s[static_cast<size_t>(i)]);
+        hi[g] = std::max(hi[g], s[static_cast<size_t>(i)]);
+        if (i + 1 < n && segment[static_cast<size_t>(i + 1)] == segment[static_cast<size_t>(i)]) {
+            shaftLength[g] += (shaft.col(i + 1) - shaft.col(i)).norm();
+        }
+    }
+    LoopSignals signals;
+    for (size_t g = 0; g < shaftLength.size(); ++g) {
+        if (hi[g] >= lo[g]) {
+            const double excess = shaftLength[g] - (hi[g] - lo[g]);
+            if (excess > signals.excessShaft) {
+                signals.excessShaft = excess;
+                signals.segment = static_cast<Segment>(g);
+            }
+        }
+    }
+    // Shape of the looped part: the nodes in the worst segment, in order.
+    std::vector<int> looped;
+    for (Eigen::Index i = 0; i < n; ++i) {
+        if (segment[static_cast<size_t>(i)] == signals.segment) {
+            looped.push_back(static_cast<int>(i));
+        }
+    }
+    // The looped part, with two nodes either side so that the crossing where
+    // the loop closes on the shaft that leads into it is included.
+    if (!looped.empty()) {
+        const Eigen::Index first = std::max<Eigen::Index>(0, looped.front() - 2);
+        const Eigen::Index last = std::min<Eigen::Index>(n - 1, looped.back() + 2);
+        const Eigen::Matrix3Xd part = shaft.middleCols(first, last - first + 1);
+        // Relative to the colon's own path over the same stretch: a shaft that
+        // merely follows a sigmoid which crosses itself in the anterior view
+        // is not looped.
+        const Eigen::Matrix3Xd path = colonPath(s[static_cast<size_t>(first)], s[static_cast<size_t>(last)]);
+        signals.crossings = std::max(0, coronalCrossings(part) - coronalCrossings(path));
+        signals.turning = coronalTurning(part) - coronalTurning(path);
+    }
+    signals.tipArcLength = s.back();
+
+    // Paradoxical motion over the last 2 cm of insertion.
+    constexpr double kWindow = 0.02;  // m
+    if (insertion < m_windowInsertion) {
+        m_windowInsertion = insertion;
+        m_windowTip = signals.tipArcLength;
+    } else if (insertion - m_windowInsertion >= kWindow) {
+        const double tipAdvance = signals.tipArcLength - m_windowTip;
+        m_signals.tipAdvanceRatio = (insertion - m_windowInsertion) / std::max(tipAdvance, 1e-3);
+        m_windowInsertion = insertion;
+        m_windowTip = signals.tipArcLength;
+    }
+    signals.tipAdvanceRatio = m_signals.tipAdvanceRatio;
+    m_signals = signals;
+
+    // Hysteresis: a loop forms above the threshold and resolves below 60% of it.
+    const bool looping = m_current == LoopKind::None ? signals.excessShaft > m_threshold
+                                                     : signals.excessShaft > 0.6 * m_threshold;
+    if (!looping) {
+        m_current = LoopKind::None;
+        return m_current;
+    }
+    const bool crossed = signals.crossings > 0;
+    switch (signals.segment) {
+    case Segment::Rectum:
+    case Segment::Sigmoid:
+    case Segment::Descending:
+        m_current =
+            !crossed ? LoopKind::N : (signals.turning > 0.0 ? LoopKind::Alpha : LoopKind::ReverseAlpha);
+        break;
+    case Segment::SplenicFlexure:
+        m_current = crossed ? LoopKind::ReverseSplenic : LoopKind::GammaDeepTransverse;
+        break;
+    default: m_current = LoopKind::GammaDeepTransverse; break;
+    }
+    return m_current;
+}
+
+}  // namespace colonosim::procedure

@@ -1,0 +1,85 @@
+#pragma once
+/// \file
+/// Loops in the colonoscope's shaft, from its shape relative to the colon,
+/// as an endoscopist reads them on magnetic endoscope imaging (Shah et al.,
+/// Gut 2000; reference/clinical-assessment.md lists the types):
+///   - excess shaft: each scope node is located on the colon centreline (arc
+///     length s); in each segment, the shaft length whose nodes lie there
+///     minus the colon length they span. Looping stores shaft in a segment.
+///   - paradoxical motion: insertion advanced against tip advance along the
+///     colon over the last window; the clinical warning sign is a tip that
+///     stops moving 1:1 with the shaft (ratio above 2).
+///   - crossings: self-crossings of the shaft projected on the coronal plane
+///     (seen from the front, x left / z up), and the handedness of the
+///     looped part (sign of its projected turning), both counted beyond
+///     those of the colon's own path over the same stretch.
+/// Each node is located along the colon near its predecessor (a window of
+/// -5/+15 cm), so loops never jump to a part of the colon close in space.
+/// Classification, by the segment holding the most excess shaft:
+///   sigmoid (or descending) with a crossing: Alpha if the loop turns
+///     counter-clockwise in the anterior view, ReverseAlpha if clockwise;
+///   sigmoid without a crossing: N;
+///   transverse (or hepatic flexure): GammaDeepTransverse;
+///   splenic flexure with a crossing: ReverseSplenic;
+/// and None while the excess is below the threshold.
+
+#include "simcore/geometry/Centreline.h"
+
+#include <Eigen/Core>
+
+#include <string_view>
+
+namespace colonosim::procedure {
+
+enum class LoopKind { None, N, Alpha, ReverseAlpha, GammaDeepTransverse, ReverseSplenic };
+
+[[nodiscard]] std::string_view loopName(LoopKind kind);
+
+struct LoopSignals {
+    double excessShaft = 0.0;                               ///< in the worst segment, m
+    geometry::Segment segment = geometry::Segment::Rectum;  ///< where the excess is
+    int crossings = 0;                                      ///< coronal self-crossings of the shaft
+    double turning =
+        0.0;  ///< signed coronal turning of the shaft in that segment, rad (+ = counter-clockwise)
+    double tipAdvanceRatio = 1.0;  ///< insertion advance / tip advance over the window (1 = 1:1)
+    double tipArcLength = 0.0;     ///< where the tip is along the colon, m
+};
+
+class LoopDetector {
+public:
+    /// `excessThreshold` (m): the stored shaft that makes a loop (default 8 cm).
+    explicit LoopDetector(const geometry::Centreline& colon, double excessThreshold = 0.08);
+
+    /// Analyses the shaft (inserted nodes, anus to tip) at insertion length
+    /// `insertion` (m). Call at the recorder rate.
+    LoopKind update(const Eigen::Matrix3Xd& shaft, double insertion);
+
+    [[nodiscard]] LoopKind current() const { return m_current; }
+    [[nodiscard]] const LoopSignals& signals() const { return m_signals; }
+
+    /// Arc length along the colon of the centreline point nearest to p, m.
+    [[nodiscard]] double locate(const Eigen::Vector3d& p) const;
+    /// The same, searching only arc lengths in [from, to].
+    [[nodiscard]] double locateNear(const Eigen::Vector3d& p, double from, double to) const;
+
+private:
+    static constexpr double kBackWindow = 0.05;  ///< m a node may lie behind its predecessor along the colon
+    static constexpr double kForwardWindow = 0.15;  ///< m it may lie ahead
+
+    /// The centreline between two arc lengths, every centimetre.
+    [[nodiscard]] Eigen::Matrix3Xd colonPath(double from, double to) const;
+
+    const geometry::Centreline& m_colon;
+    double m_threshold;
+    LoopKind m_current = LoopKind::None;
+    LoopSignals m_signals;
+    double m_windowInsertion = 0.0;
+    double m_windowTip = 0.0;
+};
+
+/// Self-crossings of a polyline projected on the coronal (x, z) plane.
+[[nodiscard]] int coronalCrossings(const Eigen::Matrix3Xd& polyline);
+/// Signed turning of a polyline in the coronal plane (anterior view), rad.
+[[nodiscard]] double coronalTurning(const Eigen::Matrix3Xd& polyline);
+
+}  // namespace colonosim::procedure
