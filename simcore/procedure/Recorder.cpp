@@ -1,0 +1,145 @@
+#include "simcore/procedure/Recorder.h"
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+namespace colonosim::procedure {
+
+std::string_view eventName(EventKind kind)
+{
+    switch (kind) {
+    case EventKind::CecumReached: return "cecum_reached";
+    case EventKind::LoopFormed: return "loop_formed";
+    case EventKind::LoopResolved: return "loop_resolved";
+    case EventKind::ExcessiveForceStart: return "excessive_force_start";
+    case EventKind::ExcessiveForceEnd: return "excessive_force_end";
+    case EventKind::Perforation: return "perforation";
+    case EventKind::RedOutStart: return "red_out_start";
+    case EventKind::RedOutEnd: return "red_out_end";
+    case EventKind::LensWash: return "lens_wash";
+    case EventKind::LesionMarked: return "lesion_marked";
+    case EventKind::Retroflexion: return "retroflexion";
+    case EventKind::InputRejected: return "input_rejected";
+    }
+    return "unknown";
+}
+
+Recorder::Recorder(const RecorderParameters& parameters) : m_parameters(parameters)
+{
+    params::require("recorder", RecorderParameters::sampleIntervalSpec, parameters.sampleInterval);
+    params::require("recorder", RecorderParameters::excessiveForceSpec, parameters.excessiveForce);
+    params::require("recorder", RecorderParameters::redOutSpec, parameters.redOutDistance);
+}
+
+void Recorder::event(double time, EventKind kind, std::string detail)
+{
+    m_recording.events.push_back(RecordedEvent{time, kind, std::move(detail)});
+}
+
+void Recorder::record(const ProcedureFrame& f)
+{
+    if (f.inputRejected) {
+        event(f.time, EventKind::InputRejected, f.inputRejection);
+    }
+    if (!m_cecumReached && f.tipArcLength >= m_parameters.colonLength - m_parameters.cecumDepth) {
+        m_cecumReached = true;
+        event(f.time, EventKind::CecumReached);
+    }
+    if (f.loop != m_loop) {
+        if (m_loop != LoopKind::None) {
+            event(f.time, EventKind::LoopResolved, std::string(loopName(m_loop)));
+        }
+        if (f.loop != LoopKind::None) {
+            event(f.time, EventKind::LoopFormed, std::string(loopName(f.loop)));
+        }
+        m_loop = f.loop;
+    }
+    const bool excessive = f.handleForce > m_parameters.excessiveForce;
+    if (excessive != m_excessive) {
+        event(f.time, excessive ? EventKind::ExcessiveForceStart : EventKind::ExcessiveForceEnd);
+        m_excessive = excessive;
+    }
+    if (f.perforation && !m_perforated) {
+        event(f.time, EventKind::Perforation, std::string(geometry::segmentName(f.tipSegment)));
+        m_perforated = true;
+    }
+    const bool redOut = f.lensWallDistance < m_parameters.redOutDistance;
+    if (redOut != m_redOut) {
+        event(f.time, redOut ? EventKind::RedOutStart : EventKind::RedOutEnd);
+        m_redOut = redOut;
+    }
+    const bool pressed = (f.input.buttons & ~m_buttons) != 0;
+    if (pressed && (f.input.buttons & ~m_buttons & kWater) != 0) {
+        event(f.time, EventKind::LensWash);
+    }
+    if (pressed && (f.input.buttons & ~m_buttons & kMarkLesion) != 0) {
+        event(f.time, EventKind::LesionMarked);
+    }
+    m_buttons = f.input.buttons;
+    // Retroflexion: the tip looks back along the colon (more than 135 degrees).
+    const bool retroflexed = f.tipDirection.dot(f.colonTangentAtTip) < -0.7071;
+    if (retroflexed && !m_retroflexed) {
+        event(f.time, EventKind::Retroflexion, std::string(geometry::segmentName(f.tipSegment)));
+    }
+    m_retroflexed = retroflexed;
+
+    if (f.time + 1e-12 >= m_nextSample) {
+        m_recording.samples.push_back(RecordedSample{f.time, f.input.insertion, f.tipPosition, f.tipSegment,
+                                                     f.handleForce, f.handleTorque, f.maxWallForce,
+                                                     f.mesenteryStrain, f.discomfort, f.loop});
+        m_nextSample += m_parameters.sampleInterval;
+    }
+}
+
+std::string Recording::canonicalText() const
+{
+    std::ostringstream out;
+    char buffer[64];
+    const auto hex = [&](double v) {
+        std::snprintf(buffer, sizeof(buffer), "%a", v);
+        out << buffer << ' ';
+    };
+    for (const RecordedSample& s : samples) {
+        out << "S ";
+        for (const double v : {s.time, s.insertion, s.tip.x(), s.tip.y(), s.tip.z(), s.handleForce,
+                               s.handleTorque, s.maxWallForce, s.mesenteryStrain, s.discomfort}) {
+            hex(v);
+        }
+        out << geometry::segmentName(s.segment) << ' ' << loopName(s.loop) << '\n';
+    }
+    for (const RecordedEvent& e : events) {
+        out << "E ";
+        hex(e.time);
+        out << eventName(e.kind) << ' ' << e.detail << '\n';
+    }
+    return out.str();
+}
+
+void Recording::writeCsv(const std::filesystem::path& samplesCsv,
+                         const std::filesystem::path& eventsCsv) const
+{
+    std::ofstream s(samplesCsv);
+    s.precision(17);
+    s << "time_s,insertion_m,tip_x_m,tip_y_m,tip_z_m,segment,handle_force_N,handle_torque_Nm,max_wall_force_"
+         "N,"
+         "mesentery_strain,discomfort,loop\n";
+    for (const RecordedSample& r : samples) {
+        s << r.time << ',' << r.insertion << ',' << r.tip.x() << ',' << r.tip.y() << ',' << r.tip.z() << ','
+          << geometry::segmentName(r.segment) << ',' << r.handleForce << ',' << r.handleTorque << ','
+          << r.maxWallForce << ',' << r.mesenteryStrain << ',' << r.discomfort << ',' << loopName(r.loop)
+          << '\n';
+    }
+    std::ofstream e(eventsCsv);
+    e.precision(17);
+    e << "time_s,event,detail\n";
+    for (const RecordedEvent& r : events) {
+        e << r.time << ',' << eventName(r.kind) << ',' << r.detail << '\n';
+    }
+    if (!s || !e) {
+        throw std::runtime_error("cannot write the recording to " + samplesCsv.string() + " and " +
+                                 eventsCsv.string());
+    }
+}
+
+}  // namespace colonosim::procedure

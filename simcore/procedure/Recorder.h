@@ -1,0 +1,143 @@
+#pragma once
+/// \file
+/// The recording of a session: samples at a fixed rate (100 Hz by default)
+/// and events at the exact loop step they happen.
+///
+/// Samples: insertion depth, tip position, colon segment at the tip, handle
+/// force and torque, maximum wall contact force, mesentery stretch,
+/// discomfort and loop state. Events, detected on edges of the per-step
+/// frame: cecum reached, loop formed / resolved (with its type), excessive
+/// handle force start / end, perforation, red-out start / end (lens against
+/// the wall), lens wash and lesion marked (button presses), retroflexion
+/// (tip pointing back along the colon), and device input rejected.
+///
+/// The canonical text form writes every double as a hexadecimal float, so
+/// two recordings are bit-identical exactly when their texts are equal.
+
+#include "simcore/geometry/Segment.h"
+#include "simcore/params/Parameter.h"
+#include "simcore/procedure/DeviceInput.h"
+#include "simcore/procedure/LoopDetector.h"
+
+#include <Eigen/Core>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace colonosim::procedure {
+
+/// What the procedure loop knows after one loop step.
+struct ProcedureFrame {
+    double time = 0.0;  ///< s since the session started
+    InputSample input;
+    Eigen::Vector3d tipPosition = Eigen::Vector3d::Zero();    ///< m
+    Eigen::Vector3d tipDirection = Eigen::Vector3d::UnitZ();  ///< unit, the camera's view
+    double tipArcLength = 0.0;                                ///< along the colon, m
+    geometry::Segment tipSegment = geometry::Segment::Rectum;
+    Eigen::Vector3d colonTangentAtTip = Eigen::Vector3d::UnitZ();  ///< unit, towards the cecum
+    double lensWallDistance = 1.0;                                 ///< from the lens to the nearest wall, m
+    double handleForce = 0.0;                                      ///< axial, + resisting insertion, N
+    double handleTorque = 0.0;                                     ///< about the shaft, N m
+    double maxWallForce = 0.0;                                     ///< largest scope-wall contact force, N
+    double mesenteryStrain = 0.0;                                  ///< largest, 1
+    double discomfort = 0.0;                                       ///< 0-10
+    bool perforation = false;
+    LoopKind loop = LoopKind::None;
+    bool inputRejected = false;
+    std::string inputRejection;
+};
+
+struct RecordedSample {
+    double time, insertion;
+    Eigen::Vector3d tip;
+    geometry::Segment segment;
+    double handleForce, handleTorque, maxWallForce, mesenteryStrain, discomfort;
+    LoopKind loop;
+};
+
+enum class EventKind {
+    CecumReached,
+    LoopFormed,
+    LoopResolved,
+    ExcessiveForceStart,
+    ExcessiveForceEnd,
+    Perforation,
+    RedOutStart,
+    RedOutEnd,
+    LensWash,
+    LesionMarked,
+    Retroflexion,
+    InputRejected,
+};
+[[nodiscard]] std::string_view eventName(EventKind kind);
+
+struct RecordedEvent {
+    double time;
+    EventKind kind;
+    std::string detail;
+};
+
+struct RecorderParameters {
+    static constexpr params::ParameterSpec sampleIntervalSpec{"sampleInterval",
+                                                              "s",
+                                                              0.01,
+                                                              1e-3,
+                                                              0.01,
+                                                              "time between recorded samples (>= 100 Hz)",
+                                                              "issue requirement: samples at >= 100 Hz"};
+    static constexpr params::ParameterSpec excessiveForceSpec{
+        "excessiveForce",
+        "N",
+        15.0,
+        1.0,
+        100.0,
+        "handle force counted as excessive",
+        "Appleyard et al. 2000: forces above ~10 N occur only 5% of the time; peak push ~43 N"};
+    static constexpr params::ParameterSpec redOutSpec{"redOutDistance",
+                                                      "m",
+                                                      0.003,
+                                                      0.0,
+                                                      0.02,
+                                                      "lens-to-wall distance below which the view is red",
+                                                      "assumption: the lens touches the mucosa"};
+    double sampleInterval = sampleIntervalSpec.defaultValue;
+    double excessiveForce = excessiveForceSpec.defaultValue;
+    double redOutDistance = redOutSpec.defaultValue;
+    double cecumDepth = 0.02;   ///< m before the end of the colon counted as "cecum reached"
+    double colonLength = 1.66;  ///< m, from the anatomy
+};
+
+struct Recording {
+    std::vector<RecordedSample> samples;
+    std::vector<RecordedEvent> events;
+
+    /// Hexadecimal floats, one line per sample and per event.
+    [[nodiscard]] std::string canonicalText() const;
+    void writeCsv(const std::filesystem::path& samplesCsv, const std::filesystem::path& eventsCsv) const;
+};
+
+class Recorder {
+public:
+    explicit Recorder(const RecorderParameters& parameters);
+
+    /// Called once per loop step, in order.
+    void record(const ProcedureFrame& frame);
+    [[nodiscard]] const Recording& recording() const { return m_recording; }
+
+private:
+    void event(double time, EventKind kind, std::string detail = {});
+
+    RecorderParameters m_parameters;
+    Recording m_recording;
+    double m_nextSample = 0.0;
+    bool m_cecumReached = false;
+    bool m_excessive = false;
+    bool m_redOut = false;
+    bool m_retroflexed = false;
+    bool m_perforated = false;
+    LoopKind m_loop = LoopKind::None;
+    std::uint8_t m_buttons = 0;
+};
+
+}  // namespace colonosim::procedure
