@@ -79,7 +79,7 @@ void ScopeWallContact::findSegmentContacts(int segment, const Eigen::Matrix3Xd& 
         const Eigen::Vector3d a = wall.col(v[0]);
         const Eigen::Vector3d b = wall.col(v[1]);
         const Eigen::Vector3d c = wall.col(v[2]);
-        const SegmentTriangleProximity prox = segmentTriangleProximity(p0, p1, a, b, c);
+        const SegmentTriangleProximity prox = segmentTriangleProximity(p0, p1, a, b, c, radius);
         if (prox.found && prox.signedDistance < radius) {
             ScopeContact contact;
             contact.segment = segment;

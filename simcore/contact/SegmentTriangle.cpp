@@ -80,7 +80,7 @@ Eigen::Vector3d barycentricOf(const Eigen::Vector3d& p, const Eigen::Vector3d& a
 
 SegmentTriangleProximity segmentTriangleProximity(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1,
                                                   const Eigen::Vector3d& a, const Eigen::Vector3d& b,
-                                                  const Eigen::Vector3d& c)
+                                                  const Eigen::Vector3d& c, double maxDistance)
 {
     const std::array<Eigen::Vector3d, 3> v{a, b, c};
     const Eigen::Vector3d outward = (b - a).cross(c - a);
@@ -106,15 +106,22 @@ SegmentTriangleProximity segmentTriangleProximity(const Eigen::Vector3d& p0, con
         best.region = region;
     };
 
+    // Edges whose half-space an end of the segment leaves (all of them for a degenerate triangle).
+    std::array<bool, 3> outsideEdge{true, true, true};
     if (!degenerate) {
+        // Every candidate is at least the smaller plane distance of the two ends.
+        if (std::min((p0 - a).dot(inward), (p1 - a).dot(inward)) >= maxDistance) {
+            return best;
+        }
         // Clip the segment to the prism over the face: (p(t) - v_i) . m_i >= 0 for each edge.
         double lo = 0.0;
         double hi = 1.0;
-        for (int i = 0; i < 3 && lo <= hi; ++i) {
+        for (int i = 0; i < 3; ++i) {
             const Eigen::Vector3d m =
                 outward.cross(v[static_cast<size_t>((i + 1) % 3)] - v[static_cast<size_t>(i)]);
             const double alpha = (p0 - v[static_cast<size_t>(i)]).dot(m);
             const double beta = dir.dot(m);
+            outsideEdge[static_cast<size_t>(i)] = alpha < 0.0 || alpha + beta < 0.0;
             if (std::abs(beta) <= 1e-30) {
                 if (alpha < 0.0) {
                     hi = -1.0;
@@ -137,6 +144,10 @@ SegmentTriangleProximity segmentTriangleProximity(const Eigen::Vector3d& p0, con
         }
     }
     for (int i = 0; i < 3; ++i) {
+        // A segment inside an edge's half-space is nearer to the face or to another edge.
+        if (!outsideEdge[static_cast<size_t>(i)]) {
+            continue;
+        }
         const Eigen::Vector3d& q0 = v[static_cast<size_t>(i)];
         const Eigen::Vector3d& q1 = v[static_cast<size_t>((i + 1) % 3)];
         const SegmentSegmentClosest cp = closestSegmentSegment(p0, p1, q0, q1);

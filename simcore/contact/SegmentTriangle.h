@@ -16,9 +16,13 @@
 /// The result is the smallest candidate: the deepest axis point. A capsule of
 /// radius r touches the wall when d < r; depth = r - d (d < 0: the axis has
 /// passed through the wall). A degenerate triangle (no normal) is treated as
-/// its three edges with d the unsigned distance.
+/// its three edges with d the unsigned distance. With `maxDistance`, a
+/// segment whose both ends lie at least that far on the lumen side of the
+/// plane is rejected early (found = false).
 
 #include <Eigen/Core>
+
+#include <limits>
 
 namespace colonosim::contact {
 
@@ -37,7 +41,8 @@ struct SegmentTriangleProximity {
 
 [[nodiscard]] SegmentTriangleProximity
 segmentTriangleProximity(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1, const Eigen::Vector3d& a,
-                         const Eigen::Vector3d& b, const Eigen::Vector3d& c);
+                         const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+                         double maxDistance = std::numeric_limits<double>::infinity());
 
 /// Closest points of segments [p0, p1] and [q0, q1] (robust when either is a
 /// point or they are parallel): s and u are the parameters on each.
