@@ -1,0 +1,27 @@
+#include "simcore/contact/ContactParameters.h"
+
+#include <array>
+
+namespace colonosim::contact {
+
+namespace {
+using P = ContactParameters;
+constexpr std::array<Field<P>, 4> kContactFields{{
+    {&P::stiffnessSpec, &P::contactStiffness},
+    {&P::dampingSpec, &P::contactDamping},
+    {&P::frictionSpec, &P::frictionCoefficient},
+    {&P::stickVelocitySpec, &P::stickVelocity},
+}};
+}  // namespace
+
+std::span<const Field<ContactParameters>> ContactParameters::fields()
+{
+    return kContactFields;
+}
+
+void ContactParameters::validate() const
+{
+    params::validateFields<ContactParameters>("contact", kContactFields, *this);
+}
+
+}  // namespace colonosim::contact

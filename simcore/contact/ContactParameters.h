@@ -1,0 +1,62 @@
+#pragma once
+/// \file
+/// Declared parameters of the scope-wall contact (SI; see ../params/Parameter.h
+/// and ScopeWallContact.h for the law). Sources: reference/physical-parameters.md;
+/// a value marked "assumption" has no measured source.
+
+#include "simcore/params/Parameter.h"
+
+#include <span>
+
+namespace colonosim::contact {
+
+using params::Field;
+using params::ParameterSpec;
+
+struct ContactParameters {
+    static constexpr ParameterSpec stiffnessSpec{
+        "contactStiffness",
+        "N/m",
+        1.0e4,
+        1.0e2,
+        1.0e6,
+        "penalty stiffness k_c of one scope segment on the wall: f_n = k_c depth",
+        "assumption: 10 N, the handle force exceeded only 5% of the time (Appleyard et al., "
+        "Gastrointest Endosc 2000), gives a penetration of about 1 mm"};
+    static constexpr ParameterSpec dampingSpec{
+        "contactDamping",
+        "N*s/m",
+        2.0,
+        0.0,
+        100.0,
+        "normal damping c_n on the penetration rate (the normal force never pulls)",
+        "assumption: damping ratio about 0.1 for a 5 g scope node on k_c = 1e4 N/m"};
+    static constexpr ParameterSpec frictionSpec{
+        "frictionCoefficient",
+        "1",
+        0.1,
+        0.0,
+        1.0,
+        "Coulomb coefficient mu of dynamic friction, scope shaft on colon mucosa",
+        "reference/physical-parameters.md: about 0.09 with good lubricant, human autopsy colon "
+        "(Communications Engineering 2024); porcine bowel 0.0004-0.054 (Lyle et al. 2013)"};
+    static constexpr ParameterSpec stickVelocitySpec{
+        "stickVelocity",
+        "m/s",
+        1.0e-2,
+        1.0e-4,
+        1.0e-1,
+        "sliding speed below which friction is viscous, mu f_n v_t / v_s (regularised stick)",
+        "assumption: creep under a sub-threshold load stays below v_s; an explicit integrator "
+        "needs mu f_n dt / (v_s m) < 2 on a scope node of mass m"};
+
+    double contactStiffness = stiffnessSpec.defaultValue;
+    double contactDamping = dampingSpec.defaultValue;
+    double frictionCoefficient = frictionSpec.defaultValue;
+    double stickVelocity = stickVelocitySpec.defaultValue;
+
+    [[nodiscard]] static std::span<const Field<ContactParameters>> fields();
+    void validate() const;
+};
+
+}  // namespace colonosim::contact
