@@ -4,6 +4,7 @@
 // truncation error of order eps^2 |f'''| and a round-off of order
 // 1e-16 |f| / eps, both far below it for these magnitudes.
 
+#include "simcore/contact/WallContactForce.h"
 #include "simcore/physics/AnchorSprings.h"
 #include "simcore/physics/Gravity.h"
 #include "simcore/physics/InsufflationPressure.h"
@@ -90,6 +91,28 @@ std::vector<TermCase> termCases()
                  std::vector<std::array<int, 3>>{{0, 1, 2}, {1, 3, 2}, {2, 3, 4}}, 2000.0);
          },
          1e-3},
+        {"scope_contact",
+         [](const Positions& x) {
+             // Two contacts pressing the wall outward by about 2-3 mm (the
+             // scope axis 4 mm from the wall for a 6.5 mm radius).
+             static geometry::TriangleMesh mesh;
+             mesh.vertices = x;
+             mesh.triangles = {{0, 1, 2}, {1, 3, 2}};
+             auto term = std::make_unique<contact::WallContactForce>(mesh, contact::ContactParameters{}, 5);
+             std::vector<contact::ScopeContact> contacts(2);
+             std::vector<Eigen::Vector3d> axis;
+             for (int k = 0; k < 2; ++k) {
+                 contacts[static_cast<size_t>(k)].triangle = k;
+                 contacts[static_cast<size_t>(k)].barycentric = Eigen::Vector3d(0.2, 0.3, 0.5);
+                 contacts[static_cast<size_t>(k)].normal = Eigen::Vector3d(0.1, 0.2, 1.0).normalized();
+                 const auto& tri = mesh.triangles[static_cast<size_t>(k)];
+                 const Eigen::Vector3d wall = 0.2 * x.col(tri[0]) + 0.3 * x.col(tri[1]) + 0.5 * x.col(tri[2]);
+                 axis.push_back(wall + 0.004 * contacts[static_cast<size_t>(k)].normal);
+             }
+             term->setContacts(contacts, axis, 0.0065);
+             return term;
+         },
+         5e-4},
         {"gravity",
          [](const Positions&) {
              return std::make_unique<Gravity>(Eigen::VectorXd::Constant(5, 3e-4),
