@@ -68,7 +68,7 @@ void ActiveRegion::update(TissueBody& body, double dt)
     for (const int i : body.integratedNodes()) {
         double& quiet = m_quiet[static_cast<size_t>(i)];
         quiet = v.col(i).squaredNorm() < sleep2 ? quiet + dt : 0.0;
-        if (quiet >= m_parameters.quietTime && body.externalForces().col(i).squaredNorm() == 0.0) {
+        if (quiet >= m_parameters.quietTime && !body.isHeldAwake(i)) {
             m_flags[static_cast<size_t>(i)] = 0;
             changed = true;
         }

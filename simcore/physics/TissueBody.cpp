@@ -1,5 +1,6 @@
 #include "simcore/physics/TissueBody.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <utility>
 
@@ -8,7 +9,8 @@ namespace colonosim::physics {
 TissueBody::TissueBody(const Positions& restPositions, const Eigen::VectorXd& masses)
     : m_x(restPositions), m_v(Velocities::Zero(3, restPositions.cols())), m_mass(masses),
       m_inverseMass(masses.cwiseInverse()), m_fixed(static_cast<size_t>(restPositions.cols()), 0),
-      m_awake(static_cast<size_t>(restPositions.cols()), 1), m_external(Forces::Zero(3, restPositions.cols()))
+      m_awake(static_cast<size_t>(restPositions.cols()), 1),
+      m_held(static_cast<size_t>(restPositions.cols()), 0), m_external(Forces::Zero(3, restPositions.cols()))
 {
     if (masses.size() != restPositions.cols()) {
         throw std::invalid_argument("TissueBody: one mass per node is required");
@@ -39,6 +41,7 @@ int TissueBody::addNode(const Eigen::Vector3d& position, double mass)
     m_inverseMass[n] = 1.0 / mass;
     m_fixed.push_back(0);
     m_awake.push_back(1);
+    m_held.push_back(0);
     m_integrated.push_back(static_cast<int>(n));
     for (auto& term : m_terms) {
         term->onActiveSetChanged(m_awake);
@@ -71,15 +74,23 @@ void TissueBody::setFixed(int node, bool fixed)
 void TissueBody::applyExternalForce(int node, const Eigen::Vector3d& force)
 {
     m_external.col(node) += force;
+    holdAwake(node);
+}
+
+void TissueBody::holdAwake(int node)
+{
+    m_held[static_cast<size_t>(node)] = 1;
     if (m_awake[static_cast<size_t>(node)] == 0) {
-        m_awake[static_cast<size_t>(node)] = 1;
-        setAwake(std::move(m_awake));
+        std::vector<std::uint8_t> awake = m_awake;
+        awake[static_cast<size_t>(node)] = 1;
+        setAwake(std::move(awake));
     }
 }
 
 void TissueBody::clearExternalForces()
 {
     m_external.setZero();
+    std::fill(m_held.begin(), m_held.end(), 0);
 }
 
 ForceTerm& TissueBody::addForceTerm(std::unique_ptr<ForceTerm> term)

@@ -43,6 +43,11 @@ public:
     /// wakes the node. Cleared by clearExternalForces().
     void applyExternalForce(int node, const Eigen::Vector3d& force);
     void clearExternalForces();
+    /// Marks a node as loaded this step (by a force term such as contact):
+    /// it wakes now and the active region keeps it awake until the loads are
+    /// cleared. applyExternalForce() does the same.
+    void holdAwake(int node);
+    [[nodiscard]] bool isHeldAwake(int node) const { return m_held[static_cast<size_t>(node)] != 0; }
     [[nodiscard]] const Forces& externalForces() const { return m_external; }
 
     ForceTerm& addForceTerm(std::unique_ptr<ForceTerm> term);
@@ -84,6 +89,7 @@ private:
     Eigen::VectorXd m_inverseMass;
     std::vector<std::uint8_t> m_fixed;
     std::vector<std::uint8_t> m_awake;
+    std::vector<std::uint8_t> m_held;  ///< loaded this step
     std::vector<int> m_integrated;
     Forces m_external;
     std::vector<std::unique_ptr<ForceTerm>> m_terms;

@@ -32,6 +32,10 @@ ProcedureLoop::ProcedureLoop(const geometry::ColonAnatomy& anatomy, const Proced
       m_discomfort(withFailureStrain(settings.discomfort, settings.tissue.mesenteryMaxStrain)),
       m_recorder(withColonLength(settings.recorder, anatomy.centreline.length()))
 {
+    // The wall's side of contact is a force term over the tissue substeps; it
+    // is added before the stepping plan is made, which reserves its stiffness.
+    m_wallContact = static_cast<contact::WallContactForce*>(&m_colon.body.addForceTerm(
+        std::make_unique<contact::WallContactForce>(anatomy.physicsMesh, settings.contact, m_colon.body.numNodes())));
     m_simulation = std::make_unique<physics::TissueSimulation>(m_colon.body, settings.stepping);
     if (settings.activeRegion) {
         m_region = std::make_unique<physics::ActiveRegion>(m_colon.neighbours, physics::SleepParameters{});
@@ -63,6 +67,7 @@ void ProcedureLoop::applyContact()
             m_scopeVelocity.col(i) = (m_scopeNow.col(i) - previous.col(i)) / m_settings.stepping.loopStep;
         }
     }
+    m_contact.setActiveNodes(m_colon.body.awake());
     const contact::ContactResult& result =
         m_contact.compute(m_scopeNow, m_scopeVelocity, previous, 0.5 * m_settings.scope.outerDiameter,
                           m_colon.body.positions(), m_colon.body.velocities());
@@ -72,11 +77,16 @@ void ProcedureLoop::applyContact()
     }
     m_scope.addGravity(m_settings.environment.gravity * physics::downDirection(m_settings.environment.patientPosition));
     m_colon.body.clearExternalForces();
-    for (Eigen::Index node = 0; node < result.wallForces.cols(); ++node) {
-        if (!result.wallForces.col(node).isZero(0.0)) {
-            m_colon.body.applyExternalForce(static_cast<int>(node), result.wallForces.col(node));
+    std::vector<Eigen::Vector3d>& axis = m_contactAxisPoints;
+    axis.clear();
+    for (const contact::ScopeContact& c : result.contacts) {
+        axis.push_back((1.0 - c.segmentParam) * m_scopeNow.col(c.segment) + c.segmentParam * m_scopeNow.col(c.segment + 1));
+        // Contact is a load from outside the tissue: it keeps the wall it touches awake.
+        for (const int node : m_anatomy.physicsMesh.triangles[static_cast<size_t>(c.triangle)]) {
+            m_colon.body.holdAwake(node);
         }
     }
+    m_wallContact->setContacts(result.contacts, axis, 0.5 * m_settings.scope.outerDiameter);
 }
 
 const ProcedureOutputs& ProcedureLoop::step(const InputSample& input)

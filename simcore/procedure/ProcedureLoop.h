@@ -7,8 +7,10 @@
 ///      recorded as an event and the last valid one is used);
 ///   2. the handle (insertion, shaft rotation) and the dials drive the scope;
 ///   3. scope-wall contact is computed on the current shapes (continuous
-///      detection against the previous scope positions), its forces load
-///      the scope's nodes and, equal and opposite, the colon's wall nodes;
+///      detection against the previous scope positions, searching only the
+///      awake wall); its forces load the scope's nodes, and its contacts
+///      become a force term on the wall (WallContactForce) over the tissue
+///      substeps, equal and opposite;
 ///   4. the scope's chain solver runs its iterations; the colon advances one
 ///      loop step with the substeps its stability bound asks for;
 ///   5. outputs: the handle force and torque (the base load of the chain),
@@ -19,6 +21,7 @@
 /// bit-identical recording.
 
 #include "simcore/contact/ScopeWallContact.h"
+#include "simcore/contact/WallContactForce.h"
 #include "simcore/geometry/ColonAnatomy.h"
 #include "simcore/physics/ActiveRegion.h"
 #include "simcore/physics/ColonBody.h"
@@ -84,6 +87,8 @@ private:
     std::unique_ptr<physics::ActiveRegion> m_region;
     scope::Colonoscope m_scope;
     contact::ScopeWallContact m_contact;
+    contact::WallContactForce* m_wallContact = nullptr;
+    std::vector<Eigen::Vector3d> m_contactAxisPoints;
     LoopDetector m_loops;
     DiscomfortModel m_discomfort;
     Recorder m_recorder;
