@@ -110,11 +110,20 @@ void Colonoscope::setNodeTorque(int node, const Eigen::Vector3d& torque)
 
 void Colonoscope::addGravity(const Eigen::Vector3d& gravity)
 {
-    const double nodeMass = m_parameters.linearMassDensity * m_materialElementLength;
-    for (Eigen::Vector3d& f : m_rod.force) {
-        f += nodeMass * gravity;
+    // Lumped masses: a full element per interior node, half at the tip, and
+    // half plus the clamped stub at the base node: the weight of the inserted length.
+    const double rho = m_parameters.linearMassDensity;
+    const int n = m_rod.numNodes();
+    for (int k = 0; k < n; ++k) {
+        double length = m_materialElementLength;
+        if (k == 0 || k == n - 1) {
+            length = n == 1 ? 0.0 : 0.5 * m_materialElementLength;
+        }
+        if (k == 0) {
+            length += m_rod.stubLength;
+        }
+        m_rod.force[static_cast<size_t>(k)] += rho * length * gravity;
     }
-    m_rod.force.back() -= 0.5 * nodeMass * gravity;  // the tip node carries half an element
 }
 
 void Colonoscope::step()

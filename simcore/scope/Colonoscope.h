@@ -72,7 +72,8 @@ public:
     /// Environmental load on inserted node `node` (0 = base, numInsertedNodes() - 1 = tip).
     void setNodeForce(int node, const Eigen::Vector3d& force);
     void setNodeTorque(int node, const Eigen::Vector3d& torque);
-    /// Adds the weight of the inserted scope (linear mass density x g) to the node forces.
+    /// Adds the weight of the inserted scope (linear mass density x inserted length x g)
+    /// to the node forces, lumped per node.
     void addGravity(const Eigen::Vector3d& gravity);
 
     /// One time step: `solverIterations` chain iterations, warm-started.
