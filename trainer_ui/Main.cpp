@@ -22,7 +22,8 @@ void printUsage()
                  "  demo        headless demonstration of the colon simulation\n"
                  "  params      declared physical parameters with units, ranges and sources\n"
                  "  mesh        import and check a patient-specific colon surface\n"
-                 "  bench       speed-versus-error report: bench [--quick] --out DIR\n";
+                 "  bench       speed-versus-error report: bench [--quick] --out DIR\n"
+                 "  rod         cantilever equilibrium of the colonoscope's rod model, as JSON\n";
 }
 }  // namespace
 
@@ -48,6 +49,9 @@ int main(int argc, char** argv)
         }
         if (command == "bench") {
             return cli::runBench(rest);
+        }
+        if (command == "rod") {
+            return cli::runRod(rest);
         }
         std::cerr << "colonosim: unknown subcommand \"" << command << "\" (see colonosim --help)\n";
         return 2;

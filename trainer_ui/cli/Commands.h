@@ -11,5 +11,6 @@ int runDemo(std::span<char* const> args);
 int runParams(std::span<char* const> args);
 int runMesh(std::span<char* const> args);
 int runBench(std::span<char* const> args);
+int runRod(std::span<char* const> args);
 
 }  // namespace colonosim::cli

@@ -6,6 +6,7 @@
 #include "simcore/physics/ActiveRegion.h"
 #include "simcore/physics/TissueParameters.h"
 #include "simcore/physics/TissueSimulation.h"
+#include "simcore/scope/ScopeParameters.h"
 #include "trainer_ui/cli/CommandLine.h"
 #include "trainer_ui/cli/Commands.h"
 
@@ -43,7 +44,9 @@ int runParams(std::span<char* const> args)
     const std::vector<const params::ParameterSpec*> sleep{&physics::SleepParameters::sleepSpeedSpec,
                                                           &physics::SleepParameters::wakeSpeedSpec,
                                                           &physics::SleepParameters::quietTimeSpec};
-    std::cout << "## Active region\n\n" << params::markdownTable("sleep", sleep);
+    std::cout << "## Active region\n\n" << params::markdownTable("sleep", sleep) << '\n';
+    std::cout << "## Colonoscope\n\n"
+              << params::markdownTable("scope", specsOf(scope::ScopeParameters::fields()));
     return 0;
 }
 

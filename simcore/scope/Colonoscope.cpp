@@ -1,0 +1,171 @@
+#include "simcore/scope/Colonoscope.h"
+
+#include "simcore/scope/Rotation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+namespace colonosim::scope {
+
+namespace {
+
+void refuse(const std::string& what, double value, const std::string& range)
+{
+    throw params::ParameterError(
+        "scope." + what + " = " + std::to_string(value) +
+        (std::isfinite(value) ? " is outside the allowed range " : " is not finite; range ") + range);
+}
+
+void requireFinite(const std::string& what, const Eigen::Vector3d& v)
+{
+    if (!v.allFinite()) {
+        throw params::ParameterError("scope." + what + " is not finite");
+    }
+}
+
+}  // namespace
+
+Colonoscope::Colonoscope(const ScopeParameters& parameters) : m_parameters(parameters)
+{
+    m_parameters.validate();
+    const int numNodes = static_cast<int>(m_parameters.numNodes);
+    m_materialElementLength = m_parameters.workingLength / (numNodes - 1);
+    m_rod.reset(numNodes, m_parameters.workingLength, m_parameters.flexuralRigidity,
+                m_parameters.torsionalRigidity, numNodes);
+    m_rod.resizeAtBase(1);
+    updateBase();
+}
+
+void Colonoscope::setHandlePose(const Eigen::Vector3d& anus, const Eigen::Vector3d& direction,
+                                const Eigen::Vector3d& up)
+{
+    requireFinite("handle anus position", anus);
+    requireFinite("handle insertion direction", direction);
+    requireFinite("handle up", up);
+    const Eigen::Vector3d forward = direction.normalized();
+    const Eigen::Vector3d upOrtho = up - up.dot(forward) * forward;
+    if (direction.norm() < 1e-12 || upOrtho.norm() < 1e-6 * up.norm() || up.norm() < 1e-12) {
+        throw params::ParameterError(
+            "scope.handle: insertion direction must be non-zero and 'up' not parallel to it");
+    }
+    m_anus = anus;
+    m_entryFrame.col(2) = forward;
+    m_entryFrame.col(1) = upOrtho.normalized();
+    m_entryFrame.col(0) = m_entryFrame.col(1).cross(forward);
+    updateBase();
+}
+
+void Colonoscope::setInsertion(double length)
+{
+    if (!(length >= 0.0 && length <= m_parameters.workingLength)) {
+        refuse("insertion", length, "[0, " + std::to_string(m_parameters.workingLength) + "] m");
+    }
+    m_insertion = length;
+    const int maxNodes = static_cast<int>(m_parameters.numNodes);
+    const int n =
+        std::min(maxNodes, static_cast<int>(std::floor(length / m_materialElementLength + 1e-9)) + 1);
+    if (n != m_rod.numNodes()) {
+        m_rod.resizeAtBase(n);
+        updateDials();
+    }
+    updateBase();
+}
+
+void Colonoscope::setShaftRotation(double angle)
+{
+    if (!(std::abs(angle) <= 1000.0)) {
+        refuse("shaftRotation", angle, "[-1000, 1000] rad");
+    }
+    m_shaftRotation = angle;
+    updateBase();
+}
+
+void Colonoscope::setDials(double upDown, double leftRight)
+{
+    const double limit = 2.0 * std::numbers::pi;
+    if (!(std::abs(upDown) <= limit)) {
+        refuse("upDownDial", upDown, "[-2 pi, 2 pi] rad (clamped to the clinical limit)");
+    }
+    if (!(std::abs(leftRight) <= limit)) {
+        refuse("leftRightDial", leftRight, "[-2 pi, 2 pi] rad (clamped to the clinical limit)");
+    }
+    m_upDown = std::clamp(upDown, -m_parameters.maxUpDownAngulation, m_parameters.maxUpDownAngulation);
+    m_leftRight =
+        std::clamp(leftRight, -m_parameters.maxLeftRightAngulation, m_parameters.maxLeftRightAngulation);
+    updateDials();
+    m_rod.rebuild();
+}
+
+void Colonoscope::setNodeForce(int node, const Eigen::Vector3d& force)
+{
+    m_rod.force[static_cast<size_t>(std::clamp(node, 0, m_rod.numNodes() - 1))] = force;
+}
+
+void Colonoscope::setNodeTorque(int node, const Eigen::Vector3d& torque)
+{
+    m_rod.torque[static_cast<size_t>(std::clamp(node, 0, m_rod.numNodes() - 1))] = torque;
+}
+
+void Colonoscope::addGravity(const Eigen::Vector3d& gravity)
+{
+    // Lumped masses: a full element per interior node, half at the tip, and
+    // half plus the clamped stub at the base node: the weight of the inserted length.
+    const double rho = m_parameters.linearMassDensity;
+    const int n = m_rod.numNodes();
+    for (int k = 0; k < n; ++k) {
+        double length = m_materialElementLength;
+        if (k == 0 || k == n - 1) {
+            length = n == 1 ? 0.0 : 0.5 * m_materialElementLength;
+        }
+        if (k == 0) {
+            length += m_rod.stubLength;
+        }
+        m_rod.force[static_cast<size_t>(k)] += rho * length * gravity;
+    }
+}
+
+void Colonoscope::step()
+{
+    solveChain(m_rod, static_cast<int>(m_parameters.solverIterations), m_parameters.solverRelaxation);
+}
+
+TipPose Colonoscope::tipPose() const
+{
+    return {m_rod.position.back(), m_rod.frame.back()};
+}
+
+HandleLoad Colonoscope::handleLoad() const
+{
+    const BaseLoad base = baseLoad(m_rod);
+    const Eigen::Vector3d axis = m_entryFrame.col(2);
+    return {base.force, base.moment, base.force.dot(axis), base.moment.dot(axis)};
+}
+
+void Colonoscope::updateBase()
+{
+    m_rod.basePosition = m_anus;
+    m_rod.baseFrame = m_entryFrame * rotationFromVector(Eigen::Vector3d(0.0, 0.0, m_shaftRotation));
+    m_rod.stubLength = std::max(0.0, m_insertion - (m_rod.numNodes() - 1) * m_materialElementLength);
+    m_rod.rebuild();
+}
+
+void Colonoscope::updateDials()
+{
+    const int n = m_rod.numNodes();
+    const int section = std::max(
+        1, static_cast<int>(std::lround(m_parameters.bendingSectionLength / m_materialElementLength)));
+    // Up bends forward towards up: a negative rotation about right; right: a positive one about up.
+    const Eigen::Vector3d perJoint = Eigen::Vector3d(-m_upDown, m_leftRight, 0.0) / section;
+    const Eigen::Matrix3d rest = rotationFromVector(perJoint);
+    const bool active = perJoint.squaredNorm() > 0.0;
+    for (int k = 0; k < n; ++k) {
+        const int fromTip = n - 1 - k;  // interior joints 1..section from the tip
+        const bool inSection = fromTip >= 1 && fromTip <= section && k > 0;
+        m_rod.dial[static_cast<size_t>(k)] = inSection && active ? rest : Eigen::Matrix3d::Identity();
+        m_rod.hasDial[static_cast<size_t>(k)] = inSection && active ? 1 : 0;
+    }
+}
+
+}  // namespace colonosim::scope

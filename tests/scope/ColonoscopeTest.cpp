@@ -1,0 +1,165 @@
+// The colonoscope: declared parameters, handle (insertion, rotation), dials
+// and the handle load, and refusal of bad device input.
+
+#include "simcore/scope/Colonoscope.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <string>
+
+namespace {
+
+using colonosim::params::ParameterError;
+using colonosim::scope::Colonoscope;
+using colonosim::scope::ScopeParameters;
+
+constexpr double kPi = std::numbers::pi;
+
+Colonoscope insertedScope(double insertion)
+{
+    Colonoscope scope;
+    scope.setHandlePose(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY());
+    scope.setInsertion(insertion);
+    return scope;
+}
+
+TEST(ScopeParameters, DefaultsValidateAndBadValuesNameFieldValueRange)
+{
+    EXPECT_NO_THROW(ScopeParameters{}.validate());
+    ScopeParameters bad;
+    bad.flexuralRigidity = std::numeric_limits<double>::quiet_NaN();
+    try {
+        bad.validate();
+        FAIL() << "NaN EI accepted";
+    } catch (const ParameterError& e) {
+        EXPECT_NE(std::string(e.what()).find("scope.flexuralRigidity"), std::string::npos) << e.what();
+    }
+    bad = {};
+    bad.numNodes = 80.5;
+    EXPECT_THROW(bad.validate(), ParameterError);
+    bad = {};
+    bad.numNodes = 5.0;
+    try {
+        bad.validate();
+        FAIL() << "5 nodes accepted";
+    } catch (const ParameterError& e) {
+        EXPECT_NE(std::string(e.what()).find("[10, 400]"), std::string::npos) << e.what();
+    }
+}
+
+// Insertion feeds nodes through the anus at fixed material spacing l = 1.7/79.
+TEST(Colonoscope, InsertionFeedsNodesThroughTheAnusAlongTheEntryDirection)
+{
+    const double l = 1.7 / 79.0;
+    struct Case {
+        double insertion;
+        int nodes;
+    };
+    for (const Case c : {Case{0.0, 1}, Case{0.5 * l, 1}, Case{1.0 * l, 2}, Case{0.3, 14}, Case{1.7, 80}}) {
+        Colonoscope scope = insertedScope(c.insertion);
+        scope.step();
+        EXPECT_EQ(scope.numInsertedNodes(), c.nodes) << c.insertion;
+        // Straight and unloaded: the tip lies at the inserted length along +x.
+        EXPECT_NEAR(scope.tipPose().position.x(), c.insertion, 1e-12) << c.insertion;
+        EXPECT_NEAR(scope.tipPose().position.y(), 0.0, 1e-12);
+    }
+}
+
+// Full up-dial bends the tip by the clamped angle (exact: rest rotations
+// compose about the same axis); the tip's forward column turns towards up.
+TEST(Colonoscope, DialsBendTheTipByTheClampedAngle)
+{
+    struct Case {
+        double upDown;
+        double leftRight;
+        double expected;  ///< angle between the shaft and the tip's forward direction
+    };
+    const ScopeParameters p;
+    for (const Case c : {Case{0.5, 0.0, 0.5}, Case{-0.5, 0.0, 0.5}, Case{4.0, 0.0, p.maxUpDownAngulation},
+                         Case{0.0, 4.0, p.maxLeftRightAngulation}, Case{0.0, -1.0, 1.0}}) {
+        Colonoscope scope = insertedScope(1.0);
+        scope.setDials(c.upDown, c.leftRight);
+        scope.step();
+        const Eigen::Matrix3d tip = scope.tipPose().rotation;
+        const Eigen::Vector3d forward = tip.col(2);
+        // Rotation angle of the tip frame relative to the entry frame (robust near pi).
+        const Eigen::Matrix3d entry = (Eigen::Matrix3d() << 0, 0, 1, 0, 1, 0, -1, 0, 0).finished();
+        const double angle = Eigen::AngleAxisd(entry.transpose() * tip).angle();
+        EXPECT_NEAR(angle, c.expected, 1e-9) << c.upDown << ' ' << c.leftRight;
+        if (c.upDown > 0.0 && c.expected < 3.0) {
+            EXPECT_GT(forward.y(), 0.1);  // up is +y
+        }
+        if (c.leftRight < 0.0) {
+            EXPECT_GT(forward.z(), 0.1);  // left is -right = +z
+        }
+        EXPECT_LE(std::abs(scope.upDownDial()), p.maxUpDownAngulation);
+    }
+}
+
+// Handle rotation with the tip held (a tip torque resisting): the tip turns
+// by phi - T L_in / GJ, the twist spread evenly along the shaft; the handle
+// torque equals the resisting torque (eq 1 at the clamp).
+TEST(Colonoscope, HandleRotationReachesTheTipThroughTorsion)
+{
+    const double insertion = 1.0;
+    Colonoscope scope = insertedScope(insertion);
+    scope.setShaftRotation(0.5);
+    const double gj = ScopeParameters{}.torsionalRigidity;
+    const double inserted = (scope.numInsertedNodes() - 1) * 1.7 / 79.0;  // elastic length beyond the stub
+    const double hold = -0.1;                                             // N m about +x
+    scope.setNodeTorque(scope.numInsertedNodes() - 1, Eigen::Vector3d(hold, 0.0, 0.0));
+    scope.step();
+    const Eigen::Matrix3d tip = scope.tipPose().rotation;
+    const double tipTwist = std::atan2(tip(2, 1), tip(1, 1));  // up column turning about +x
+    EXPECT_NEAR(tipTwist, 0.5 + hold * inserted / gj, 1e-9);
+    EXPECT_NEAR(scope.handleLoad().axialTorque, hold, 1e-12);
+}
+
+// The handle load is the sum of the environmental loads (eq 1 at the clamp).
+TEST(Colonoscope, HandleLoadSumsTheNodeForces)
+{
+    Colonoscope scope = insertedScope(0.5);
+    scope.setNodeForce(scope.numInsertedNodes() - 1, Eigen::Vector3d(-2.0, 0.0, 0.0));
+    scope.setNodeForce(3, Eigen::Vector3d(-1.0, 0.5, 0.0));
+    scope.step();
+    EXPECT_NEAR(scope.handleLoad().axialForce, -3.0, 1e-12);
+    EXPECT_NEAR(scope.handleLoad().force.y(), 0.5, 1e-12);
+    scope.clearLoads();
+    scope.addGravity(Eigen::Vector3d(0.0, 0.0, -9.81));
+    const double weight = 0.2 * 9.81 * 0.5;  // the inserted 0.5 m, stub included
+    EXPECT_NEAR(scope.handleLoad().force.z(), -weight, 1e-12);
+}
+
+TEST(Colonoscope, BadDeviceInputIsRefusedAtTheBoundary)
+{
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    const double inf = std::numeric_limits<double>::infinity();
+    Colonoscope scope = insertedScope(0.5);
+    for (double bad : {nan, inf, -0.01, 1.71, 1e300}) {
+        EXPECT_THROW(scope.setInsertion(bad), ParameterError) << bad;
+    }
+    for (double bad : {nan, inf, 1e6}) {
+        EXPECT_THROW(scope.setShaftRotation(bad), ParameterError) << bad;
+        EXPECT_THROW(scope.setDials(bad, 0.0), ParameterError) << bad;
+        EXPECT_THROW(scope.setDials(0.0, bad), ParameterError) << bad;
+    }
+    EXPECT_THROW(
+        scope.setHandlePose(Eigen::Vector3d(nan, 0, 0), Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY()),
+        ParameterError);
+    EXPECT_THROW(
+        scope.setHandlePose(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitX()),
+        ParameterError);
+    try {
+        scope.setInsertion(2.5);
+        FAIL();
+    } catch (const ParameterError& e) {
+        EXPECT_NE(std::string(e.what()).find("scope.insertion = 2.5"), std::string::npos) << e.what();
+    }
+    // The refused inputs left the state as it was.
+    EXPECT_EQ(scope.numInsertedNodes(), insertedScope(0.5).numInsertedNodes());
+}
+
+}  // namespace
