@@ -5,6 +5,8 @@
 #include "simcore/geometry/MeshExport.h"
 #include "simcore/geometry/ProceduralColon.h"
 
+#include "RunColonosim.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -18,25 +20,11 @@
 
 namespace {
 
-struct Result {
-    int status = -1;
-    std::string output;  ///< stdout and stderr together
-};
+using colonosim::testing::Result;
 
-/// Runs colonosim; stderr joins stdout unless `stdoutOnly`.
 Result run(const std::string& arguments, bool stdoutOnly = false)
 {
-    const std::string command =
-        std::string(COLONOSIM_EXECUTABLE) + " " + arguments + (stdoutOnly ? " 2>/dev/null" : " 2>&1");
-    Result result;
-    FILE* pipe = popen(command.c_str(), "r");
-    std::array<char, 4096> buffer{};
-    while (fgets(buffer.data(), buffer.size(), pipe) != nullptr) {
-        result.output += buffer.data();
-    }
-    const int raw = pclose(pipe);
-    result.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    return result;
+    return colonosim::testing::runColonosim(arguments, stdoutOnly);
 }
 
 std::filesystem::path tempDir()

@@ -2,6 +2,8 @@
 // analytic cantilever solutions reproduced, and exit status 2 with field,
 // value and range on bad input.
 
+#include "RunColonosim.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -13,24 +15,11 @@
 
 namespace {
 
-struct Result {
-    int status = -1;
-    std::string output;
-};
+using colonosim::testing::Result;
 
 Result run(const std::string& arguments, bool stdoutOnly = false)
 {
-    const std::string command =
-        std::string(COLONOSIM_EXECUTABLE) + " " + arguments + (stdoutOnly ? " 2>/dev/null" : " 2>&1");
-    Result result;
-    FILE* pipe = popen(command.c_str(), "r");
-    std::array<char, 4096> buffer{};
-    while (fgets(buffer.data(), buffer.size(), pipe) != nullptr) {
-        result.output += buffer.data();
-    }
-    const int raw = pclose(pipe);
-    result.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    return result;
+    return colonosim::testing::runColonosim(arguments, stdoutOnly);
 }
 
 nlohmann::json rod(const std::string& arguments)
