@@ -7,6 +7,8 @@
 
 #include "simcore/geometry/CentrelineSampling.h"
 
+#include "SegmentLengths.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -28,19 +30,7 @@ void PrintTo(const BendCase& c, std::ostream* os)
     *os << c.name;
 }
 
-AnatomyParameters withLengths(const std::array<double, kNumSegments>& l)
-{
-    AnatomyParameters p;
-    p.rectumLength = l[0];
-    p.sigmoidLength = l[1];
-    p.descendingLength = l[2];
-    p.splenicFlexureLength = l[3];
-    p.transverseLength = l[4];
-    p.hepaticFlexureLength = l[5];
-    p.ascendingLength = l[6];
-    p.cecumLength = l[7];
-    return p;
-}
+using testing::withLengths;
 
 constexpr double kStencil = 0.003;  ///< tangents compared +-3 mm apart
 constexpr double kWindow = 0.005;   ///< curvature averaged over +-5 mm

@@ -2,7 +2,9 @@
 
 #include "simcore/geometry/CentrelineSampling.h"
 
+#include "SegmentLengths.h"
 #include <Eigen/Geometry>
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -15,19 +17,7 @@ struct LayoutCase {
     std::array<double, kNumSegments> lengths;  // m, rectum -> cecum
 };
 
-AnatomyParameters withLengths(const std::array<double, kNumSegments>& l)
-{
-    AnatomyParameters p;
-    p.rectumLength = l[0];
-    p.sigmoidLength = l[1];
-    p.descendingLength = l[2];
-    p.splenicFlexureLength = l[3];
-    p.transverseLength = l[4];
-    p.hepaticFlexureLength = l[5];
-    p.ascendingLength = l[6];
-    p.cecumLength = l[7];
-    return p;
-}
+using testing::withLengths;
 
 class ColonLayoutCase : public ::testing::TestWithParam<LayoutCase> {};
 
