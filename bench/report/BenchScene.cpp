@@ -1,5 +1,6 @@
 #include "bench/report/BenchScene.h"
 
+#include "simcore/geometry/CentrelineSampling.h"
 #include "simcore/geometry/ProceduralColon.h"
 #include "simcore/physics/SpringCalibration.h"
 
@@ -32,20 +33,13 @@ void StandardLoad::apply(physics::TissueBody& body, double t) const
 
 namespace {
 
-/// Centreline sample nearest to arc length s.
-size_t nearestSample(const geometry::Centreline& centreline, double s)
-{
-    const auto it = std::lower_bound(centreline.arcLength.begin(), centreline.arcLength.end(), s);
-    return std::min(static_cast<size_t>(it - centreline.arcLength.begin()), centreline.arcLength.size() - 1);
-}
-
 /// Tube resolution matching the colon's physics mesh: its ring size, mean
 /// lumen radius over the nodes and mean ring spacing.
 physics::TubeResolution matchingTube(const geometry::ColonAnatomy& anatomy, int nodesPerRing)
 {
     double radiusSum = 0.0;
     for (const geometry::PhysicsNodeInfo& info : anatomy.physicsNodes) {
-        radiusSum += anatomy.centreline.radius[nearestSample(anatomy.centreline, info.arcLength)];
+        radiusSum += geometry::sampleCentreline(anatomy.centreline, info.arcLength).radius;
     }
     const int n = anatomy.physicsMesh.numVertices();
     physics::TubeResolution tube;
@@ -82,8 +76,7 @@ StandardLoad placeStandardLoad(const geometry::ColonAnatomy& anatomy, const phys
     StandardLoad load;
     load.point = body.positions().col(centre);
     const geometry::PhysicsNodeInfo& info = anatomy.physicsNodes[static_cast<size_t>(centre)];
-    const Eigen::Vector3d axisPoint =
-        anatomy.centreline.points[nearestSample(anatomy.centreline, info.arcLength)];
+    const Eigen::Vector3d axisPoint = geometry::sampleCentreline(anatomy.centreline, info.arcLength).point;
     load.direction = (load.point - axisPoint).normalized();
     for (int i = 0; i < body.numNodes(); ++i) {
         if (!body.isFixed(i) && (body.positions().col(i) - load.point).norm() <= load.radius) {

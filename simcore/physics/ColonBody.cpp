@@ -1,5 +1,7 @@
 #include "simcore/physics/ColonBody.h"
 
+#include "simcore/geometry/CentrelineSampling.h"
+
 #include "simcore/physics/Gravity.h"
 #include "simcore/physics/OrganConstraint.h"
 #include "simcore/physics/ViscousDrag.h"
@@ -15,16 +17,6 @@ using geometry::Attachment;
 using geometry::ColonAnatomy;
 
 namespace {
-/// Centreline sample index nearest to arc length s.
-size_t sampleAt(const geometry::Centreline& centreline, double s)
-{
-    const auto it = std::lower_bound(centreline.arcLength.begin(), centreline.arcLength.end(), s);
-    if (it == centreline.arcLength.end()) {
-        return centreline.arcLength.size() - 1;
-    }
-    return static_cast<size_t>(it - centreline.arcLength.begin());
-}
-
 std::vector<std::vector<int>> springNeighbours(const SpringSet& springs, int numNodes)
 {
     std::vector<std::vector<int>> neighbours(static_cast<size_t>(numNodes));
@@ -58,10 +50,10 @@ ColonBody buildColonBody(const ColonAnatomy& anatomy, const TissueParameters& ti
     std::vector<Eigen::Vector3d> axis(static_cast<size_t>(n));
     std::vector<double> radius(static_cast<size_t>(n));
     for (int i = 0; i < n; ++i) {
-        const size_t sample =
-            sampleAt(anatomy.centreline, anatomy.physicsNodes[static_cast<size_t>(i)].arcLength);
-        axis[static_cast<size_t>(i)] = anatomy.centreline.tangents[sample];
-        radius[static_cast<size_t>(i)] = anatomy.centreline.radius[sample];
+        const geometry::CentrelineSample at = geometry::sampleCentreline(
+            anatomy.centreline, anatomy.physicsNodes[static_cast<size_t>(i)].arcLength);
+        axis[static_cast<size_t>(i)] = at.tangent;
+        radius[static_cast<size_t>(i)] = at.radius;
     }
 
     const Eigen::VectorXd mass = wallNodeMasses(mesh, tissue);

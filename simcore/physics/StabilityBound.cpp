@@ -15,6 +15,11 @@ StabilityEstimate estimateStability(const TissueBody& body)
 {
     Eigen::VectorXd kRow;
     Eigen::VectorXd cRow;
+    return estimateStability(body, kRow, cRow);
+}
+
+StabilityEstimate estimateStability(const TissueBody& body, Eigen::VectorXd& kRow, Eigen::VectorXd& cRow)
+{
     body.stiffnessBounds(kRow, cRow);
     StabilityEstimate estimate;
     double omega2 = 0.0;

@@ -32,6 +32,9 @@ struct StabilityEstimate {
 
 /// Gershgorin estimate over the body's integrated nodes.
 [[nodiscard]] StabilityEstimate estimateStability(const TissueBody& body);
+/// The same with caller-owned row-sum scratch (no allocation once sized).
+[[nodiscard]] StabilityEstimate estimateStability(const TissueBody& body, Eigen::VectorXd& kRow,
+                                                  Eigen::VectorXd& cRow);
 
 /// Spectral radius of the integrator's amplification matrix for
 /// x'' = -omega^2 x - c x' at step h.

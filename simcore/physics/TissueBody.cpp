@@ -81,9 +81,8 @@ void TissueBody::holdAwake(int node)
 {
     m_held[static_cast<size_t>(node)] = 1;
     if (m_awake[static_cast<size_t>(node)] == 0) {
-        std::vector<std::uint8_t> awake = m_awake;
-        awake[static_cast<size_t>(node)] = 1;
-        setAwake(std::move(awake));
+        m_awake[static_cast<size_t>(node)] = 1;
+        applyAwake();
     }
 }
 
@@ -177,12 +176,17 @@ double TissueBody::potentialEnergy() const
     return energy;
 }
 
-void TissueBody::setAwake(std::vector<std::uint8_t> awake)
+void TissueBody::setAwake(const std::vector<std::uint8_t>& awake)
 {
     if (awake.size() != static_cast<size_t>(numNodes())) {
         throw std::invalid_argument("TissueBody::setAwake: one flag per node is required");
     }
-    m_awake = std::move(awake);
+    m_awake = awake;
+    applyAwake();
+}
+
+void TissueBody::applyAwake()
+{
     for (Eigen::Index i = 0; i < m_x.cols(); ++i) {
         if (m_awake[static_cast<size_t>(i)] == 0) {
             m_v.col(i).setZero();

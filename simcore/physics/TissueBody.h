@@ -74,7 +74,7 @@ public:
     [[nodiscard]] const std::vector<int>& integratedNodes() const { return m_integrated; }
     [[nodiscard]] const std::vector<std::uint8_t>& awake() const { return m_awake; }
     /// Sets the awake flags (one per node) and rebuilds the active lists.
-    void setAwake(std::vector<std::uint8_t> awake);
+    void setAwake(const std::vector<std::uint8_t>& awake);
     void wakeAll();
 
     /// Gershgorin row sums of K and D over all terms, one entry per node.
@@ -82,6 +82,8 @@ public:
 
 private:
     void rebuildIntegratedNodes();
+    /// After m_awake changed: resting velocities, lists, terms.
+    void applyAwake();
 
     Positions m_x;
     Velocities m_v;

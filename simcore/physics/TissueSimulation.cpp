@@ -27,9 +27,38 @@ TissueSimulation::TissueSimulation(TissueBody& body, const SteppingPolicy& polic
     replan();
 }
 
+namespace {
+bool within(double planned, double now, double tolerance)
+{
+    return std::abs(now - planned) <= tolerance * std::max(std::abs(planned), 1e-300);
+}
+}  // namespace
+
+void TissueSimulation::refreshPlan()
+{
+    // The bound is re-evaluated at the current state; the plan (bisection for
+    // the stable step, integrator, note) is re-derived only when the estimate
+    // moved by more than 1%, which the safety factor covers.
+    constexpr double kTolerance = 0.01;
+    const StabilityEstimate now = estimateStability(m_body, m_kRow, m_cRow);
+    m_stepsSincePlan = 0;
+    if (within(m_stability.omegaMax, now.omegaMax, kTolerance) &&
+        within(m_stability.dampingRateMax, now.dampingRateMax, kTolerance) &&
+        within(m_stability.betaMin, now.betaMin, kTolerance) &&
+        within(m_stability.betaMax, now.betaMax, kTolerance)) {
+        return;
+    }
+    derivePlan(now);
+}
+
 void TissueSimulation::replan()
 {
-    m_stability = estimateStability(m_body);
+    derivePlan(estimateStability(m_body, m_kRow, m_cRow));
+}
+
+void TissueSimulation::derivePlan(const StabilityEstimate& estimate)
+{
+    m_stability = estimate;
     m_stableStep = maxStableStep(m_policy.integrator, m_stability);
     std::ostringstream note;
     m_stepsSincePlan = 0;
@@ -125,7 +154,7 @@ bool TissueSimulation::advance()
         replan();
         accepted = runSubsteps(m_substeps);
     } else if (++m_stepsSincePlan >= m_policy.replanInterval) {
-        replan();
+        refreshPlan();
     }
     if (accepted) {
         m_time += m_policy.loopStep;

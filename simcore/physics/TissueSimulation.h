@@ -94,6 +94,9 @@ public:
     [[nodiscard]] Integrator& integrator() { return *m_integrator; }
 
 private:
+    /// Periodic: re-estimates, re-derives the plan only if the estimate moved.
+    void refreshPlan();
+    void derivePlan(const StabilityEstimate& estimate);
     bool runSubsteps(int substeps);
     bool checkState(StepDiagnostic& diagnostic) const;
 
@@ -106,6 +109,7 @@ private:
     int m_substeps = 1;
     double m_time = 0.0;
     std::string m_planNote;
+    Eigen::VectorXd m_kRow, m_cRow;  ///< row-sum scratch of the stability estimate
     Positions m_savedX;
     Velocities m_savedV;
     std::vector<StepDiagnostic> m_rejections;

@@ -1,5 +1,7 @@
 #include "simcore/procedure/LoopDetector.h"
 
+#include "simcore/geometry/CentrelineSampling.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -106,10 +108,7 @@ Eigen::Matrix3Xd LoopDetector::colonPath(double from, double to) const
     Eigen::Matrix3Xd path(3, count);
     for (Eigen::Index k = 0; k < count; ++k) {
         const double s = from + (to - from) * static_cast<double>(k) / static_cast<double>(count - 1);
-        const auto it = std::lower_bound(m_colon.arcLength.begin(), m_colon.arcLength.end(), s);
-        const auto index = static_cast<size_t>(std::min<std::ptrdiff_t>(
-            it - m_colon.arcLength.begin(), static_cast<std::ptrdiff_t>(m_colon.points.size()) - 1));
-        path.col(k) = m_colon.points[index];
+        path.col(k) = geometry::sampleCentreline(m_colon, s).point;
     }
     return path;
 }
@@ -130,11 +129,8 @@ LoopKind LoopDetector::update(const Eigen::Matrix3Xd& shaft, double insertion)
         const double previous = i == 0 ? 0.0 : s[static_cast<size_t>(i - 1)];
         s[static_cast<size_t>(i)] =
             locateNear(shaft.col(i), previous - kBackWindow, previous + kForwardWindow);
-        const auto it =
-            std::lower_bound(m_colon.arcLength.begin(), m_colon.arcLength.end(), s[static_cast<size_t>(i)]);
-        const auto k = static_cast<size_t>(std::min<std::ptrdiff_t>(
-            it - m_colon.arcLength.begin(), static_cast<std::ptrdiff_t>(m_colon.segment.size()) - 1));
-        segment[static_cast<size_t>(i)] = m_colon.segment[k];
+        segment[static_cast<size_t>(i)] =
+            geometry::sampleCentreline(m_colon, s[static_cast<size_t>(i)]).segment;
     }
     // Excess shaft per segment.
     std::array<double, geometry::kNumSegments> shaftLength{};

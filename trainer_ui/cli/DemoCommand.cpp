@@ -5,6 +5,7 @@
 /// gravity and insufflation, pushes on the sigmoid wall as a colonoscope
 /// would, maps the visual mesh, and reports what happened in physical units.
 
+#include "simcore/geometry/CentrelineSampling.h"
 #include "simcore/geometry/MeshMapping.h"
 #include "simcore/geometry/ProceduralColon.h"
 #include "simcore/physics/ActiveRegion.h"
@@ -98,10 +99,10 @@ int runDemo(std::span<char* const> args)
 
     const physics::Positions rest = colon.body.positions();
     const int pushed = sigmoidNode(anatomy);
-    const Eigen::Vector3d pushCentre = anatomy.centreline.points[static_cast<size_t>(
-        std::lower_bound(anatomy.centreline.arcLength.begin(), anatomy.centreline.arcLength.end(),
-                         anatomy.physicsNodes[static_cast<size_t>(pushed)].arcLength) -
-        anatomy.centreline.arcLength.begin())];
+    const Eigen::Vector3d pushCentre =
+        geometry::sampleCentreline(anatomy.centreline,
+                                   anatomy.physicsNodes[static_cast<size_t>(pushed)].arcLength)
+            .point;
     const int steps = static_cast<int>(std::lround(duration / policy.loopStep));
     start = Clock::now();
     for (int s = 0; s < steps; ++s) {
