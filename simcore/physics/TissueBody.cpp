@@ -139,16 +139,6 @@ void TissueBody::dampingProduct(const Positions& x, const Eigen::Matrix3Xd& dv, 
     }
 }
 
-void TissueBody::computeNonSymmetricForces(const Positions& x, const Velocities& v, Forces& f) const
-{
-    f = m_external;
-    for (const auto& term : m_terms) {
-        if (!term->hasSymmetricJacobian()) {
-            term->addForceAndDamping(x, v, f);
-        }
-    }
-}
-
 int TissueBody::projectConstraints(Positions& x, Velocities& v) const
 {
     int corrected = 0;
@@ -196,11 +186,6 @@ void TissueBody::applyAwake()
     for (auto& term : m_terms) {
         term->onActiveSetChanged(m_awake);
     }
-}
-
-void TissueBody::wakeAll()
-{
-    setAwake(std::vector<std::uint8_t>(static_cast<size_t>(numNodes()), 1));
 }
 
 void TissueBody::stiffnessBounds(Eigen::VectorXd& kRow, Eigen::VectorXd& cRow) const

@@ -61,9 +61,6 @@ public:
     void stiffnessProduct(const Positions& x, const Eigen::Matrix3Xd& dx, Eigen::Matrix3Xd& df,
                           bool definite = false) const;
     void dampingProduct(const Positions& x, const Eigen::Matrix3Xd& dv, Eigen::Matrix3Xd& df) const;
-    /// Sum of the forces of terms without a symmetric Jacobian (explicit part
-    /// of the implicit solve).
-    void computeNonSymmetricForces(const Positions& x, const Velocities& v, Forces& f) const;
     /// Applies every constraint to the integrated nodes.
     int projectConstraints(Positions& x, Velocities& v) const;
 
@@ -75,7 +72,6 @@ public:
     [[nodiscard]] const std::vector<std::uint8_t>& awake() const { return m_awake; }
     /// Sets the awake flags (one per node) and rebuilds the active lists.
     void setAwake(const std::vector<std::uint8_t>& awake);
-    void wakeAll();
 
     /// Gershgorin row sums of K and D over all terms, one entry per node.
     void stiffnessBounds(Eigen::VectorXd& kRow, Eigen::VectorXd& cRow) const;
