@@ -8,6 +8,7 @@ namespace colonosim::procedure {
 
 namespace {
 constexpr int kLoopDetectionInterval = 10;  ///< loop steps between loop analyses (100 Hz at 1 kHz)
+constexpr double kContactRelaxation = 0.02;  ///< scope-side contact load relaxation, 1
 
 RecorderParameters withColonLength(RecorderParameters p, double length)
 {
@@ -67,13 +68,23 @@ void ProcedureLoop::applyContact()
             m_scopeVelocity.col(i) = (m_scopeNow.col(i) - previous.col(i)) / m_settings.stepping.loopStep;
         }
     }
-    m_contact.setActiveNodes(m_colon.body.awake());
     const contact::ContactResult& result =
         m_contact.compute(m_scopeNow, m_scopeVelocity, previous, 0.5 * m_settings.scope.outerDiameter,
                           m_colon.body.positions(), m_colon.body.velocities());
+    // Under-relaxed contact load on the quasi-static scope (the penalty is
+    // ~60x stiffer than the scope's tip): f <- f + beta (f_new - f), the old
+    // loads aligned from the tip like the velocities.
+    Eigen::Matrix3Xd relaxed = Eigen::Matrix3Xd::Zero(3, n);
+    for (Eigen::Index i = 0; i < n; ++i) {
+        const Eigen::Index j = i - shift;
+        const Eigen::Vector3d old =
+            j >= 0 && j < m_scopeLoad.cols() ? Eigen::Vector3d(m_scopeLoad.col(j)) : Eigen::Vector3d::Zero();
+        relaxed.col(i) = old + kContactRelaxation * (result.scopeForces.col(i) - old);
+    }
+    m_scopeLoad = relaxed;
     m_scope.clearLoads();
     for (Eigen::Index i = 0; i < n; ++i) {
-        m_scope.setNodeForce(static_cast<int>(i), result.scopeForces.col(i));
+        m_scope.setNodeForce(static_cast<int>(i), m_scopeLoad.col(i));
     }
     m_scope.addGravity(m_settings.environment.gravity * physics::downDirection(m_settings.environment.patientPosition));
     m_colon.body.clearExternalForces();

@@ -7,8 +7,9 @@
 ///      recorded as an event and the last valid one is used);
 ///   2. the handle (insertion, shaft rotation) and the dials drive the scope;
 ///   3. scope-wall contact is computed on the current shapes (continuous
-///      detection against the previous scope positions, searching only the
-///      awake wall); its forces load the scope's nodes, and its contacts
+///      detection against the previous scope positions; a sleeping wall is
+///      still a wall, so the whole wall is searched); its forces load the
+///      scope's nodes, and its contacts
 ///      become a force term on the wall (WallContactForce) over the tissue
 ///      substeps, equal and opposite;
 ///   4. the scope's chain solver runs its iterations; the colon advances one
@@ -96,7 +97,7 @@ private:
     InputSample m_input;
     ProcedureFrame m_frame;
     ProcedureOutputs m_outputs;
-    Eigen::Matrix3Xd m_scopeNow, m_scopePrevious, m_scopeVelocity;
+    Eigen::Matrix3Xd m_scopeNow, m_scopePrevious, m_scopeVelocity, m_scopeLoad;
     double m_time = 0.0;
     long m_steps = 0;
 };
