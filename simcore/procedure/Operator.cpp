@@ -27,14 +27,18 @@ InputSample ScriptedOperator::next(const ProcedureLoop& loop)
     // The lumen as the camera sees it: the centreline 4 cm ahead of the tip,
     // in the tip's camera frame (right, up, forward).
     const geometry::Centreline& colon = loop.loops().colon();
-    const double ahead = std::min(frame.tipArcLength + (m_phase == Phase::Withdraw ? -0.04 : 0.04), colon.length());
+    const double ahead =
+        std::min(frame.tipArcLength + (m_phase == Phase::Withdraw ? -0.04 : 0.04), colon.length());
     const Eigen::Vector3d target = geometry::sampleCentreline(colon, std::max(ahead, 0.0)).point;
     const Eigen::Vector3d inCamera = loop.outputs().tip.rotation.transpose() * (target - frame.tipPosition);
     if (inCamera.norm() > 1e-6 && m_phase != Phase::Withdraw) {
+        // Turn the dials towards the lumen, following its angular offset with
+        // a first-order lag (the operator's reaction), within +-1 rad.
         const double up = std::atan2(inCamera.y(), std::abs(inCamera.z()) + 1e-3);
         const double left = std::atan2(-inCamera.x(), std::abs(inCamera.z()) + 1e-3);
-        m_input.dialUpDown = std::clamp(m_input.dialUpDown + m_style.steeringGain * up * dt, -2.0, 2.0);
-        m_input.dialLeftRight = std::clamp(m_input.dialLeftRight + m_style.steeringGain * left * dt, -2.0, 2.0);
+        const double follow = std::min(1.0, m_style.steeringGain * dt);
+        m_input.dialUpDown += follow * (std::clamp(up, -1.0, 1.0) - m_input.dialUpDown);
+        m_input.dialLeftRight += follow * (std::clamp(left, -1.0, 1.0) - m_input.dialLeftRight);
     } else {
         m_input.dialUpDown *= 1.0 - dt;  // relax the dials while withdrawing
         m_input.dialLeftRight *= 1.0 - dt;

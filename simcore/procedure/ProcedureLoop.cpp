@@ -1,6 +1,7 @@
 #include "simcore/procedure/ProcedureLoop.h"
 
 #include "simcore/geometry/CentrelineSampling.h"
+#include "simcore/physics/StaticSolver.h"
 
 #include <algorithm>
 
@@ -8,7 +9,6 @@ namespace colonosim::procedure {
 
 namespace {
 constexpr int kLoopDetectionInterval = 10;  ///< loop steps between loop analyses (100 Hz at 1 kHz)
-constexpr double kContactRelaxation = 0.02;  ///< scope-side contact load relaxation, 1
 
 RecorderParameters withColonLength(RecorderParameters p, double length)
 {
@@ -24,19 +24,21 @@ DiscomfortParameters withFailureStrain(DiscomfortParameters p, double strain)
 }  // namespace
 
 ProcedureLoop::ProcedureLoop(const geometry::ColonAnatomy& anatomy, const ProcedureSettings& settings)
-    : m_anatomy(anatomy),
-      m_settings(settings),
+    : m_anatomy(anatomy), m_settings(settings),
       m_colon(physics::buildColonBody(anatomy, settings.tissue, settings.environment, settings.calibration)),
-      m_scope(settings.scope),
-      m_contact(anatomy.physicsMesh, settings.contact),
-      m_loops(anatomy.centreline),
+      m_scope(settings.scope), m_contact(anatomy.physicsMesh, settings.contact),
+      m_coupling(settings.contact.contactStiffness, settings.contactStepLimit), m_loops(anatomy.centreline),
       m_discomfort(withFailureStrain(settings.discomfort, settings.tissue.mesenteryMaxStrain)),
       m_recorder(withColonLength(settings.recorder, anatomy.centreline.length()))
 {
     // The wall's side of contact is a force term over the tissue substeps; it
     // is added before the stepping plan is made, which reserves its stiffness.
-    m_wallContact = static_cast<contact::WallContactForce*>(&m_colon.body.addForceTerm(
-        std::make_unique<contact::WallContactForce>(anatomy.physicsMesh, settings.contact, m_colon.body.numNodes())));
+    m_wallContact = static_cast<contact::WallContactForce*>(
+        &m_colon.body.addForceTerm(std::make_unique<contact::WallContactForce>(
+            anatomy.physicsMesh, settings.contact, m_colon.body.numNodes())));
+    // Start at rest in equilibrium under gravity and insufflation (the
+    // sleeping of nodes at rest assumes it), with no contact yet.
+    physics::solveStaticEquilibrium(m_colon.body, 1e-5, 1000);
     m_simulation = std::make_unique<physics::TissueSimulation>(m_colon.body, settings.stepping);
     if (settings.activeRegion) {
         m_region = std::make_unique<physics::ActiveRegion>(m_colon.neighbours, physics::SleepParameters{});
@@ -71,33 +73,23 @@ void ProcedureLoop::applyContact()
     const contact::ContactResult& result =
         m_contact.compute(m_scopeNow, m_scopeVelocity, previous, 0.5 * m_settings.scope.outerDiameter,
                           m_colon.body.positions(), m_colon.body.velocities());
-    // Under-relaxed contact load on the quasi-static scope (the penalty is
-    // ~60x stiffer than the scope's tip): f <- f + beta (f_new - f), the old
-    // loads aligned from the tip like the velocities.
-    Eigen::Matrix3Xd relaxed = Eigen::Matrix3Xd::Zero(3, n);
-    for (Eigen::Index i = 0; i < n; ++i) {
-        const Eigen::Index j = i - shift;
-        const Eigen::Vector3d old =
-            j >= 0 && j < m_scopeLoad.cols() ? Eigen::Vector3d(m_scopeLoad.col(j)) : Eigen::Vector3d::Zero();
-        relaxed.col(i) = old + kContactRelaxation * (result.scopeForces.col(i) - old);
-    }
-    m_scopeLoad = relaxed;
+    m_coupling.update(result, m_scope.rod(), static_cast<int>(shift), m_anatomy.physicsMesh,
+                      m_colon.body.positions(), 0.5 * m_settings.scope.outerDiameter);
     m_scope.clearLoads();
     for (Eigen::Index i = 0; i < n; ++i) {
-        m_scope.setNodeForce(static_cast<int>(i), m_scopeLoad.col(i));
+        m_scope.setNodeForce(static_cast<int>(i), m_coupling.loads().col(i));
     }
-    m_scope.addGravity(m_settings.environment.gravity * physics::downDirection(m_settings.environment.patientPosition));
+    m_scope.addGravity(m_settings.environment.gravity *
+                       physics::downDirection(m_settings.environment.patientPosition));
     m_colon.body.clearExternalForces();
-    std::vector<Eigen::Vector3d>& axis = m_contactAxisPoints;
-    axis.clear();
     for (const contact::ScopeContact& c : result.contacts) {
-        axis.push_back((1.0 - c.segmentParam) * m_scopeNow.col(c.segment) + c.segmentParam * m_scopeNow.col(c.segment + 1));
         // Contact is a load from outside the tissue: it keeps the wall it touches awake.
         for (const int node : m_anatomy.physicsMesh.triangles[static_cast<size_t>(c.triangle)]) {
             m_colon.body.holdAwake(node);
         }
     }
-    m_wallContact->setContacts(result.contacts, axis, 0.5 * m_settings.scope.outerDiameter);
+    m_wallContact->setContacts(result.contacts, m_coupling.wallPoints(),
+                               0.5 * m_settings.scope.outerDiameter);
 }
 
 const ProcedureOutputs& ProcedureLoop::step(const InputSample& input)
@@ -116,7 +108,8 @@ const ProcedureOutputs& ProcedureLoop::step(const InputSample& input)
     m_scope.setShaftRotation(m_input.rotation);
     m_scope.setDials(m_input.dialUpDown, m_input.dialLeftRight);
     if (m_colon.insufflation != nullptr && (m_input.buttons & (kAir | kSuction)) != 0) {
-        const double rate = (m_input.buttons & kAir) != 0 ? m_settings.insufflationRate : -m_settings.insufflationRate;
+        const double rate =
+            (m_input.buttons & kAir) != 0 ? m_settings.insufflationRate : -m_settings.insufflationRate;
         m_colon.insufflation->setPressure(
             std::clamp(m_colon.insufflation->pressure() + rate * dt, 0.0, m_settings.maxInsufflation));
     }

@@ -8,10 +8,12 @@
 ///   2. the handle (insertion, shaft rotation) and the dials drive the scope;
 ///   3. scope-wall contact is computed on the current shapes (continuous
 ///      detection against the previous scope positions; a sleeping wall is
-///      still a wall, so the whole wall is searched); its forces load the
-///      scope's nodes, and its contacts
-///      become a force term on the wall (WallContactForce) over the tissue
-///      substeps, equal and opposite;
+///      still a wall, so the whole wall is searched); ContactCoupling turns
+///      it into the scope's node loads (one Newton step with the rod's
+///      compliance) and into a force term on the wall (WallContactForce)
+///      that meets the scope through the same compliance over the substeps;
+///   The colon is first settled to static equilibrium under gravity and
+///   insufflation, so nodes at rest may sleep.
 ///   4. the scope's chain solver runs its iterations; the colon advances one
 ///      loop step with the substeps its stability bound asks for;
 ///   5. outputs: the handle force and torque (the base load of the chain),
@@ -27,6 +29,7 @@
 #include "simcore/physics/ActiveRegion.h"
 #include "simcore/physics/ColonBody.h"
 #include "simcore/physics/TissueSimulation.h"
+#include "simcore/procedure/ContactCoupling.h"
 #include "simcore/procedure/Discomfort.h"
 #include "simcore/procedure/InputTrace.h"
 #include "simcore/procedure/LoopDetector.h"
@@ -49,6 +52,10 @@ struct ProcedureSettings {
     DiscomfortParameters discomfort;
     double insufflationRate = 266.6;  ///< Pa/s while air (or, negative, suction) is pressed (2 mmHg/s)
     double maxInsufflation = 8000.0;  ///< Pa the insufflator never exceeds (60 mmHg)
+    /// m: the contact response moves a scope node at most this far per loop
+    /// step (0.5 mm per 1 ms = 0.5 m/s, the fastest insertion the contact
+    /// must handle; model choice, see ContactCoupling.h)
+    double contactStepLimit = 0.5e-3;
 };
 
 /// What a haptic device and the camera need after each step.
@@ -89,7 +96,7 @@ private:
     scope::Colonoscope m_scope;
     contact::ScopeWallContact m_contact;
     contact::WallContactForce* m_wallContact = nullptr;
-    std::vector<Eigen::Vector3d> m_contactAxisPoints;
+    ContactCoupling m_coupling;
     LoopDetector m_loops;
     DiscomfortModel m_discomfort;
     Recorder m_recorder;
@@ -97,7 +104,7 @@ private:
     InputSample m_input;
     ProcedureFrame m_frame;
     ProcedureOutputs m_outputs;
-    Eigen::Matrix3Xd m_scopeNow, m_scopePrevious, m_scopeVelocity, m_scopeLoad;
+    Eigen::Matrix3Xd m_scopeNow, m_scopePrevious, m_scopeVelocity;
     double m_time = 0.0;
     long m_steps = 0;
 };
