@@ -23,7 +23,8 @@ void printUsage()
                  "  params      declared physical parameters with units, ranges and sources\n"
                  "  mesh        import and check a patient-specific colon surface\n"
                  "  bench       speed-versus-error report: bench [--quick] --out DIR\n"
-                 "  rod         cantilever equilibrium of the colonoscope's rod model, as JSON\n";
+                 "  rod         cantilever equilibrium of the colonoscope's rod model, as JSON\n"
+                 "  run         one procedure: run --default --operator expert|novice|replay:TRACE --out DIR\n";
 }
 }  // namespace
 
@@ -46,6 +47,9 @@ int main(int argc, char** argv)
         }
         if (command == "mesh") {
             return cli::runMesh(rest);
+        }
+        if (command == "run") {
+            return cli::runProcedure(rest);
         }
         if (command == "bench") {
             return cli::runBench(rest);

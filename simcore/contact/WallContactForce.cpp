@@ -19,7 +19,23 @@ void WallContactForce::setContacts(const std::vector<ScopeContact>& contacts,
     for (size_t k = 0; k < contacts.size() && k < scopeAxisPoints.size(); ++k) {
         const ScopeContact& c = contacts[k];
         m_contacts.push_back(Active{m_mesh.triangles[static_cast<size_t>(c.triangle)], c.barycentric,
-                                    c.normal, scopeAxisPoints[k], -c.frictionForce});
+                                    c.normal, scopeAxisPoints[k], -c.frictionForce,
+                                    m_parameters.contactStiffness, 0.0});
+    }
+}
+
+void WallContactForce::setContacts(const std::vector<ScopeContact>& contacts,
+                                   const std::vector<WallContactPoint>& points, double radius)
+{
+    m_radius = radius;
+    m_contacts.clear();
+    for (size_t k = 0; k < contacts.size() && k < points.size(); ++k) {
+        const ScopeContact& c = contacts[k];
+        const WallContactPoint& p = points[k];
+        const double stiffness = std::clamp(p.stiffness, 0.0, m_parameters.contactStiffness);
+        m_contacts.push_back(Active{m_mesh.triangles[static_cast<size_t>(c.triangle)], c.barycentric,
+                                    c.normal, p.axisPoint, -p.frictionScale * c.frictionForce, stiffness,
+                                    p.depthOffset});
     }
 }
 
@@ -28,13 +44,13 @@ double WallContactForce::depth(const Active& c, const physics::Positions& x) con
     const Eigen::Vector3d wall = c.barycentric[0] * x.col(c.vertices[0]) +
                                  c.barycentric[1] * x.col(c.vertices[1]) +
                                  c.barycentric[2] * x.col(c.vertices[2]);
-    return m_radius - (c.axisPoint - wall).dot(c.normal);
+    return m_radius - (c.axisPoint - wall).dot(c.normal) + c.depthOffset;
 }
 
 void WallContactForce::addForce(const physics::Positions& x, physics::Forces& f) const
 {
     for (const Active& c : m_contacts) {
-        const double fn = std::max(0.0, m_parameters.contactStiffness * depth(c, x));
+        const double fn = std::max(0.0, c.stiffness * depth(c, x));
         for (int m = 0; m < 3; ++m) {
             f.col(c.vertices[static_cast<size_t>(m)]) += c.barycentric[m] * (c.friction - fn * c.normal);
         }
@@ -70,7 +86,7 @@ void WallContactForce::addStiffnessProduct(const physics::Positions& x, const Ei
         const Eigen::Vector3d dw = c.barycentric[0] * dx.col(c.vertices[0]) +
                                    c.barycentric[1] * dx.col(c.vertices[1]) +
                                    c.barycentric[2] * dx.col(c.vertices[2]);
-        const Eigen::Vector3d row = m_parameters.contactStiffness * dw.dot(c.normal) * c.normal;
+        const Eigen::Vector3d row = c.stiffness * dw.dot(c.normal) * c.normal;
         for (int m = 0; m < 3; ++m) {
             df.col(c.vertices[static_cast<size_t>(m)]) -= c.barycentric[m] * row;
         }
@@ -110,7 +126,7 @@ double WallContactForce::potentialEnergy(const physics::Positions& x) const
     double energy = 0.0;
     for (const Active& c : m_contacts) {
         const double d = std::max(0.0, depth(c, x));
-        energy += 0.5 * m_parameters.contactStiffness * d * d;
+        energy += 0.5 * c.stiffness * d * d;
     }
     return energy;
 }

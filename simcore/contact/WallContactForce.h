@@ -24,6 +24,14 @@
 
 namespace colonosim::contact {
 
+/// How the wall sees one contact's scope point during the substeps.
+struct WallContactPoint {
+    Eigen::Vector3d axisPoint = Eigen::Vector3d::Zero();  ///< scope axis point, m
+    double stiffness = 0.0;                               ///< N/m, in (0, k_c]: k_c for a rigid scope
+    double depthOffset = 0.0;    ///< m added to the depth (the scope's own deflection under its load)
+    double frictionScale = 1.0;  ///< the contact's friction force is scaled by this, 1
+};
+
 class WallContactForce final : public physics::ForceTerm {
 public:
     WallContactForce(const geometry::TriangleMesh& wallMesh, const ContactParameters& parameters,
@@ -31,8 +39,14 @@ public:
 
     /// Takes this loop step's contacts; `scopeAxisPoints` are the scope axis
     /// points of the contacts (one per contact), `radius` the scope's, m.
+    /// The scope is rigid here: stiffness k_c, no offset.
     void setContacts(const std::vector<ScopeContact>& contacts,
                      const std::vector<Eigen::Vector3d>& scopeAxisPoints, double radius);
+    /// The scope is compliant: each contact with its own stiffness and depth
+    /// offset (see procedure/ContactCoupling.h). Stiffnesses above k_c are
+    /// clamped to k_c, which the stable-step plan reserves.
+    void setContacts(const std::vector<ScopeContact>& contacts, const std::vector<WallContactPoint>& points,
+                     double radius);
     [[nodiscard]] int numContacts() const { return static_cast<int>(m_contacts.size()); }
 
     [[nodiscard]] std::string_view name() const override { return "scope_contact"; }
@@ -54,6 +68,8 @@ private:
         Eigen::Vector3d normal;     ///< into the lumen
         Eigen::Vector3d axisPoint;  ///< scope axis, m
         Eigen::Vector3d friction;   ///< on the wall, N
+        double stiffness;           ///< N/m
+        double depthOffset;         ///< m
     };
     [[nodiscard]] double depth(const Active& c, const physics::Positions& x) const;
 

@@ -58,6 +58,17 @@ void SpringSet::setStiffness(int s, double stiffness, double damping)
     m_c[static_cast<size_t>(s)] = damping;
 }
 
+double SpringSet::maxTensileStrain(const Positions& x, SpringFamily family) const
+{
+    double largest = 0.0;
+    for (size_t e = 0; e < m_i.size(); ++e) {
+        if (m_family[e] == family && m_rest[e] > 0.0) {
+            largest = std::max(largest, ((x.col(m_j[e]) - x.col(m_i[e])).norm() - m_rest[e]) / m_rest[e]);
+        }
+    }
+    return largest;
+}
+
 void SpringSet::addForce(const Positions& x, Forces& f) const
 {
     for (const int s : m_active) {

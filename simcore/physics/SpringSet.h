@@ -39,6 +39,8 @@ public:
     [[nodiscard]] double damping(int s) const { return m_c[static_cast<size_t>(s)]; }
     [[nodiscard]] SpringFamily family(int s) const { return m_family[static_cast<size_t>(s)]; }
     void setStiffness(int s, double stiffness, double damping);
+    /// Largest tensile strain (l - L) / L of the springs of `family` at x (1; 0 if none is stretched).
+    [[nodiscard]] double maxTensileStrain(const Positions& x, SpringFamily family) const;
 
     [[nodiscard]] std::string_view name() const override { return m_name; }
     void addForce(const Positions& x, Forces& f) const override;

@@ -24,7 +24,12 @@ StabilityEstimate estimateStability(const TissueBody& body, Eigen::VectorXd& kRo
     StabilityEstimate estimate;
     double omega2 = 0.0;
     estimate.betaMin = std::numeric_limits<double>::infinity();
-    for (const int i : body.integratedNodes()) {
+    // Every free node, asleep or not: a sleeping node can wake at any loop
+    // step, and the plan must already be stable for it then.
+    for (int i = 0; i < body.numNodes(); ++i) {
+        if (body.isFixed(i)) {
+            continue;
+        }
         const double m = body.masses()[i];
         if (kRow[i] / m > omega2) {
             omega2 = kRow[i] / m;

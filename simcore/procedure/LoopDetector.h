@@ -55,6 +55,7 @@ public:
     LoopKind update(const Eigen::Matrix3Xd& shaft, double insertion);
 
     [[nodiscard]] LoopKind current() const { return m_current; }
+    [[nodiscard]] const geometry::Centreline& colon() const { return m_colon; }
     [[nodiscard]] const LoopSignals& signals() const { return m_signals; }
 
     /// Arc length along the colon of the centreline point nearest to p, m.

@@ -8,8 +8,6 @@ double solveChain(DiscreteRod& rod, int iterations, double relaxation)
 {
     const int n = rod.numNodes();
     double largest = 0.0;
-    const Eigen::Vector3d interior = relaxation * rod.stiffness.cwiseInverse();
-    const Eigen::Vector3d ends = 0.5 * interior;
     for (int it = 0; it < iterations; ++it) {
         largest = 0.0;
         Eigen::Vector3d f = Eigen::Vector3d::Zero();  // forces at the nodes downstream of k
@@ -19,9 +17,9 @@ double solveChain(DiscreteRod& rod, int iterations, double relaxation)
             if (k < n - 1) {
                 m += (rod.position[i + 1] - rod.position[i]).cross(f);  // eq 1: moment about node k
             }
-            const Eigen::Vector3d net =
-                rod.frame[i].transpose() * m - rod.jointStiffness(k).cwiseProduct(rod.theta[i]);
-            const Eigen::Vector3d step = (k == 0 || k == n - 1 ? ends : interior).cwiseProduct(net);
+            const Eigen::Vector3d stiffness = rod.jointStiffness(k);
+            const Eigen::Vector3d net = rod.frame[i].transpose() * m - stiffness.cwiseProduct(rod.theta[i]);
+            const Eigen::Vector3d step = relaxation * net.cwiseQuotient(stiffness);
             rod.theta[i] += step;  // eqs 4-5
             largest = std::max(largest, step.cwiseAbs().maxCoeff());
             f += rod.force[i];

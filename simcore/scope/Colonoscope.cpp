@@ -68,7 +68,6 @@ void Colonoscope::setInsertion(double length)
         std::min(maxNodes, static_cast<int>(std::floor(length / m_materialElementLength + 1e-9)) + 1);
     if (n != m_rod.numNodes()) {
         m_rod.resizeAtBase(n);
-        updateDials();
     }
     updateBase();
 }
@@ -128,7 +127,8 @@ void Colonoscope::addGravity(const Eigen::Vector3d& gravity)
 
 void Colonoscope::step()
 {
-    solveChain(m_rod, static_cast<int>(m_parameters.solverIterations), m_parameters.solverRelaxation);
+    m_lastResidual =
+        solveChain(m_rod, static_cast<int>(m_parameters.solverIterations), m_parameters.solverRelaxation);
 }
 
 TipPose Colonoscope::tipPose() const
@@ -148,6 +148,7 @@ void Colonoscope::updateBase()
     m_rod.basePosition = m_anus;
     m_rod.baseFrame = m_entryFrame * rotationFromVector(Eigen::Vector3d(0.0, 0.0, m_shaftRotation));
     m_rod.stubLength = std::max(0.0, m_insertion - (m_rod.numNodes() - 1) * m_materialElementLength);
+    updateDials();
     m_rod.rebuild();
 }
 
@@ -158,13 +159,22 @@ void Colonoscope::updateDials()
         1, static_cast<int>(std::lround(m_parameters.bendingSectionLength / m_materialElementLength)));
     // Up bends forward towards up: a negative rotation about right; right: a positive one about up.
     const Eigen::Vector3d perJoint = Eigen::Vector3d(-m_upDown, m_leftRight, 0.0) / section;
-    const Eigen::Matrix3d rest = rotationFromVector(perJoint);
     const bool active = perJoint.squaredNorm() > 0.0;
+    const Eigen::Matrix3d rest = active ? rotationFromVector(perJoint) : Eigen::Matrix3d::Identity();
+    // The joint at the clamp is entering the body: its share grows with the
+    // inserted part of its element, so the bend inside is continuous in the
+    // insertion (no jump of the tip when a node passes the anus).
+    const double entering = std::clamp(m_rod.stubLength / m_materialElementLength, 0.0, 1.0);
     for (int k = 0; k < n; ++k) {
         const int fromTip = n - 1 - k;  // interior joints 1..section from the tip
-        const bool inSection = fromTip >= 1 && fromTip <= section && k > 0;
-        m_rod.dial[static_cast<size_t>(k)] = inSection && active ? rest : Eigen::Matrix3d::Identity();
-        m_rod.hasDial[static_cast<size_t>(k)] = inSection && active ? 1 : 0;
+        const bool inSection = active && fromTip >= 1 && fromTip <= section;
+        const auto i = static_cast<size_t>(k);
+        if (inSection && k == 0) {
+            m_rod.dial[i] = rotationFromVector(entering * perJoint);
+        } else {
+            m_rod.dial[i] = inSection ? rest : Eigen::Matrix3d::Identity();
+        }
+        m_rod.hasDial[i] = inSection ? 1 : 0;
     }
 }
 

@@ -21,7 +21,9 @@
 /// limits and spread evenly over the joints of the bending section (the
 /// round(bendingSectionLength / l) interior joints nearest the tip) as rest
 /// rotations, superimposed on the computed deflection. Up bends towards the
-/// tip frame's up column, right towards its right column.
+/// tip frame's up column, right towards its right column. While the bending
+/// section is entering, the joint at the clamp takes the inserted fraction
+/// of its share, so the tip does not jump when a node passes the anus.
 ///
 /// Outputs: node positions (base to tip), the tip pose (camera frame:
 /// columns right, up, forward) and the handle load: eq 1 at the clamp, the
@@ -82,6 +84,8 @@ public:
     [[nodiscard]] std::span<const Eigen::Vector3d> nodePositions() const { return m_rod.position; }
     [[nodiscard]] TipPose tipPose() const;
     [[nodiscard]] HandleLoad handleLoad() const;
+    /// Largest joint increment of the last chain iteration of step(), rad (0 when converged).
+    [[nodiscard]] double lastResidual() const { return m_lastResidual; }
     [[nodiscard]] double upDownDial() const { return m_upDown; }
     [[nodiscard]] double leftRightDial() const { return m_leftRight; }
     [[nodiscard]] const ScopeParameters& parameters() const { return m_parameters; }
@@ -102,6 +106,7 @@ private:
     double m_shaftRotation = 0.0;
     double m_upDown = 0.0;
     double m_leftRight = 0.0;
+    double m_lastResidual = 0.0;
 };
 
 }  // namespace colonosim::scope

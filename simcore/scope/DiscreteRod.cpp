@@ -27,7 +27,14 @@ void DiscreteRod::reset(int numNodes, double length, double flexuralRigidity, do
 
 Eigen::Vector3d DiscreteRod::jointStiffness(int joint) const
 {
-    return joint == 0 || joint == numNodes() - 1 ? Eigen::Vector3d(2.0 * stiffness) : stiffness;
+    if (joint == numNodes() - 1) {
+        return 2.0 * stiffness;  // the tip half-joint (also when it is the only one)
+    }
+    if (joint == 0) {
+        // The clamp joint stands for the stub and half of element 0.
+        return stiffness * (elementLength / (stubLength + 0.5 * elementLength));
+    }
+    return stiffness;
 }
 
 const Eigen::Matrix3d& DiscreteRod::frameBefore(int joint) const

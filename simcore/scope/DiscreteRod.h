@@ -15,8 +15,12 @@
 /// are superimposed on the computed deflection, section 2.5). The internal
 /// moment of joint k is K_k Theta_k with K = diag(EI, EI, GJ)/l (eq 2).
 ///
-/// Joint 0 (at the clamp) and joint n - 1 (at the tip) each represent half an
-/// element, so their stiffness is 2K; interior joints represent the element
+/// Joint 0 (at the clamp) represents the clamped stub and half an element,
+/// stiffness K l / (stub + l/2) (2K when the stub is empty); joint n - 1 (at
+/// the tip) represents half an element, 2K. As the stub grows to l and the
+/// next node passes the clamp, the compliance between the clamp and the old
+/// node 0 (1.5 l / EI) is the same before and after: the rod does not jump
+/// as it is inserted. Interior joints represent the element
 /// length around their node (a midpoint rule: positions converge as 1/n^2,
 /// and a uniform end moment gives the exact tip angle ML/EI). The tip joint
 /// rotates only the tip frame C_{n-1} (the camera frame), not an element.
@@ -54,7 +58,7 @@ struct DiscreteRod {
     /// A straight rod of `numNodes` nodes (capacity `capacity` >= numNodes).
     void reset(int numNodes, double length, double flexuralRigidity, double torsionalRigidity, int capacity);
     [[nodiscard]] int numNodes() const { return static_cast<int>(theta.size()); }
-    /// K_k: doubled at the clamp and tip half-joints.
+    /// K_k: see above for the clamp and tip joints.
     [[nodiscard]] Eigen::Vector3d jointStiffness(int joint) const;
     /// Frame before joint k: C_{k-1}, or the clamp frame for k = 0.
     [[nodiscard]] const Eigen::Matrix3d& frameBefore(int joint) const;

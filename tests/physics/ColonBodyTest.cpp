@@ -198,6 +198,34 @@ TEST(ActiveRegion, FarRestingNodesSleepAndALoadWakesThem)
                  params::ParameterError);
 }
 
+TEST(ActiveRegion, TheSteppingPlanCoversSleepingNodes)
+{
+    // A sleeping node can wake at any loop step, so the stable-step plan made
+    // while (nearly) everything sleeps must still hold for it: the plan of a
+    // sleeping colon equals that of the awake one, and a load that wakes a
+    // region is integrated without a rejected step.
+    ColonBody colon = buildColonBody(testing::makeTubeAnatomy(shortTube()), TissueParameters{},
+                                     EnvironmentParameters{}, {0.6, 0.95});
+    ASSERT_TRUE(solveStaticEquilibrium(colon.body, 1e-9).converged);
+    TissueSimulation simulation(colon.body, SteppingPolicy{});
+    const int awakePlan = simulation.substeps();
+    ActiveRegion region(colon.neighbours, SleepParameters{});
+    simulation.setActiveRegion(&region);
+    for (int s = 0; s < 200; ++s) {
+        simulation.advance();
+    }
+    ASSERT_LT(region.numAwake(), colon.body.numNodes() / 10);
+    EXPECT_EQ(simulation.substeps(), awakePlan) << simulation.planNote();
+    const int loaded = 12 * 16 + 3;
+    for (int s = 0; s < 50; ++s) {
+        colon.body.clearExternalForces();
+        colon.body.applyExternalForce(loaded, Eigen::Vector3d(0.5, 0.0, 0.0));
+        simulation.advance();
+    }
+    EXPECT_EQ(simulation.rejectedSteps(), 0);
+    EXPECT_TRUE(colon.body.positions().allFinite());
+}
+
 TEST(ActiveRegion, ErrorAgainstTheFullSimulationIsSmall)
 {
     // The same settled tube and the same 0.2 N load, with and without sleeping,

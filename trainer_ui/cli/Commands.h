@@ -11,6 +11,7 @@ int runDemo(std::span<char* const> args);
 int runParams(std::span<char* const> args);
 int runMesh(std::span<char* const> args);
 int runBench(std::span<char* const> args);
+int runProcedure(std::span<char* const> args);
 int runRod(std::span<char* const> args);
 
 }  // namespace colonosim::cli

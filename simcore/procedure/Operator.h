@@ -1,0 +1,72 @@
+#pragma once
+/// \file
+/// Scripted operators (autopilots) for tests, benchmarks and the demo. They
+/// act only through the InputSample a person's hands produce, and see only
+/// what a person would: the handle force, the tip's view of the lumen, and
+/// the loop warning signs (a tip that stops moving with the shaft).
+///   Expert: inserts at 3 cm/s steering the tip towards the lumen; when the
+///     handle force exceeds 8 N or the shaft stores a loop, withdraws 3 cm
+///     with clockwise torque (the standard loop reduction) before going on;
+///     from the cecum withdraws slowly (1 cm/s), sweeping the tip.
+///   Novice: pushes at 6 cm/s through resistance, backs off only above
+///     25 N, steers late (low gain), and withdraws fast (4 cm/s).
+///   Replay: plays an input trace back sample by sample.
+
+#include "simcore/procedure/InputTrace.h"
+#include "simcore/procedure/ProcedureLoop.h"
+
+#include <memory>
+#include <string_view>
+
+namespace colonosim::procedure {
+
+class Operator {
+public:
+    virtual ~Operator() = default;
+    /// The next input, from what the loop showed after its last step.
+    virtual InputSample next(const ProcedureLoop& loop) = 0;
+    /// True when the operator has finished (withdrawn, or the trace ended).
+    [[nodiscard]] virtual bool finished() const = 0;
+};
+
+struct OperatorStyle {
+    double insertSpeed;    ///< m/s
+    double withdrawSpeed;  ///< m/s after the cecum
+    double forceLimit;     ///< N of handle force that makes it back off
+    bool reducesLoops;     ///< withdraws with clockwise torque when a loop forms
+    double steeringGain;   ///< dial rad per rad of lumen offset per second
+};
+
+[[nodiscard]] OperatorStyle expertStyle();
+[[nodiscard]] OperatorStyle noviceStyle();
+
+class ScriptedOperator final : public Operator {
+public:
+    explicit ScriptedOperator(const OperatorStyle& style) : m_style(style) {}
+    InputSample next(const ProcedureLoop& loop) override;
+    [[nodiscard]] bool finished() const override { return m_finished; }
+
+private:
+    enum class Phase { Insert, ReduceLoop, Withdraw };
+    OperatorStyle m_style;
+    Phase m_phase = Phase::Insert;
+    InputSample m_input;
+    double m_reduceUntil = 0.0;  ///< insertion at which a loop reduction ends, m
+    bool m_finished = false;
+};
+
+class ReplayOperator final : public Operator {
+public:
+    explicit ReplayOperator(InputTrace trace) : m_trace(std::move(trace)) {}
+    InputSample next(const ProcedureLoop& loop) override;
+    [[nodiscard]] bool finished() const override { return m_next >= m_trace.samples.size(); }
+
+private:
+    InputTrace m_trace;
+    size_t m_next = 0;
+};
+
+/// "expert", "novice" or "replay:TRACE"; throws ParameterError otherwise.
+[[nodiscard]] std::unique_ptr<Operator> makeOperator(std::string_view name);
+
+}  // namespace colonosim::procedure

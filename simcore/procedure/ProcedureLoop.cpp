@@ -1,0 +1,171 @@
+#include "simcore/procedure/ProcedureLoop.h"
+
+#include "simcore/geometry/CentrelineSampling.h"
+#include "simcore/physics/StaticSolver.h"
+
+#include <algorithm>
+
+namespace colonosim::procedure {
+
+namespace {
+constexpr int kLoopDetectionInterval = 10;  ///< loop steps between loop analyses (100 Hz at 1 kHz)
+
+RecorderParameters withColonLength(RecorderParameters p, double length)
+{
+    p.colonLength = length;
+    return p;
+}
+
+DiscomfortParameters withFailureStrain(DiscomfortParameters p, double strain)
+{
+    p.mesenteryFailureStrain = strain;
+    return p;
+}
+}  // namespace
+
+ProcedureLoop::ProcedureLoop(const geometry::ColonAnatomy& anatomy, const ProcedureSettings& settings)
+    : m_anatomy(anatomy), m_settings(settings),
+      m_colon(physics::buildColonBody(anatomy, settings.tissue, settings.environment, settings.calibration)),
+      m_scope(settings.scope), m_contact(anatomy.physicsMesh, settings.contact),
+      m_coupling(settings.contact.contactStiffness, settings.contactStepLimit), m_loops(anatomy.centreline),
+      m_discomfort(withFailureStrain(settings.discomfort, settings.tissue.mesenteryMaxStrain)),
+      m_recorder(withColonLength(settings.recorder, anatomy.centreline.length()))
+{
+    // The wall's side of contact is a force term over the tissue substeps; it
+    // is added before the stepping plan is made, which reserves its stiffness.
+    m_wallContact = static_cast<contact::WallContactForce*>(
+        &m_colon.body.addForceTerm(std::make_unique<contact::WallContactForce>(
+            anatomy.physicsMesh, settings.contact, m_colon.body.numNodes())));
+    // Start at rest in equilibrium under gravity and insufflation (the
+    // sleeping of nodes at rest assumes it), with no contact yet.
+    physics::solveStaticEquilibrium(m_colon.body, 1e-5, 1000);
+    m_simulation = std::make_unique<physics::TissueSimulation>(m_colon.body, settings.stepping);
+    if (settings.activeRegion) {
+        m_region = std::make_unique<physics::ActiveRegion>(m_colon.neighbours, physics::SleepParameters{});
+        m_simulation->setActiveRegion(m_region.get());
+    }
+    const geometry::Centreline& c = anatomy.centreline;
+    m_scope.setHandlePose(c.points.front(), c.tangents.front(), c.normals.front());
+    m_trace.loopStep = settings.stepping.loopStep;
+}
+
+void ProcedureLoop::applyContact()
+{
+    const auto nodes = m_scope.nodePositions();
+    const auto n = static_cast<Eigen::Index>(nodes.size());
+    m_scopePrevious = m_scopeNow;
+    m_scopeNow.resize(3, n);
+    for (Eigen::Index i = 0; i < n; ++i) {
+        m_scopeNow.col(i) = nodes[static_cast<size_t>(i)];
+    }
+    // Nodes are counted from the base; when a node has just passed the anus
+    // the previous shape has one node fewer: align the two from the tip.
+    m_scopeVelocity.setZero(3, n);
+    Eigen::Matrix3Xd previous = m_scopeNow;
+    const Eigen::Index shift = n - m_scopePrevious.cols();
+    for (Eigen::Index i = 0; i < n; ++i) {
+        const Eigen::Index j = i - shift;
+        if (j >= 0 && j < m_scopePrevious.cols()) {
+            previous.col(i) = m_scopePrevious.col(j);
+            m_scopeVelocity.col(i) = (m_scopeNow.col(i) - previous.col(i)) / m_settings.stepping.loopStep;
+        }
+    }
+    const contact::ContactResult& result =
+        m_contact.compute(m_scopeNow, m_scopeVelocity, previous, 0.5 * m_settings.scope.outerDiameter,
+                          m_colon.body.positions(), m_colon.body.velocities());
+    m_coupling.update(result, m_scope.rod(), static_cast<int>(shift), m_anatomy.physicsMesh,
+                      m_colon.body.positions(), 0.5 * m_settings.scope.outerDiameter);
+    m_scope.clearLoads();
+    for (Eigen::Index i = 0; i < n; ++i) {
+        m_scope.setNodeForce(static_cast<int>(i), m_coupling.loads().col(i));
+    }
+    m_scope.addGravity(m_settings.environment.gravity *
+                       physics::downDirection(m_settings.environment.patientPosition));
+    m_colon.body.clearExternalForces();
+    for (const contact::ScopeContact& c : result.contacts) {
+        // Contact is a load from outside the tissue: it keeps the wall it touches awake.
+        for (const int node : m_anatomy.physicsMesh.triangles[static_cast<size_t>(c.triangle)]) {
+            m_colon.body.holdAwake(node);
+        }
+    }
+    m_wallContact->setContacts(result.contacts, m_coupling.wallPoints(),
+                               0.5 * m_settings.scope.outerDiameter);
+}
+
+const ProcedureOutputs& ProcedureLoop::step(const InputSample& input)
+{
+    m_trace.samples.push_back(input);
+    const std::string rejection = validateInput(input);
+    if (rejection.empty()) {
+        m_input = input;
+    }
+    m_frame = ProcedureFrame{};
+    m_frame.inputRejected = !rejection.empty();
+    m_frame.inputRejection = rejection;
+
+    const double dt = m_settings.stepping.loopStep;
+    m_scope.setInsertion(std::min(m_input.insertion, m_settings.scope.workingLength));
+    m_scope.setShaftRotation(m_input.rotation);
+    m_scope.setDials(m_input.dialUpDown, m_input.dialLeftRight);
+    if (m_colon.insufflation != nullptr && (m_input.buttons & (kAir | kSuction)) != 0) {
+        const double rate =
+            (m_input.buttons & kAir) != 0 ? m_settings.insufflationRate : -m_settings.insufflationRate;
+        m_colon.insufflation->setPressure(
+            std::clamp(m_colon.insufflation->pressure() + rate * dt, 0.0, m_settings.maxInsufflation));
+    }
+
+    applyContact();
+    m_scope.step();
+    m_simulation->advance();
+    m_time += dt;
+    ++m_steps;
+    observe();
+    m_recorder.record(m_frame);
+    return m_outputs;
+}
+
+void ProcedureLoop::observe()
+{
+    const double dt = m_settings.stepping.loopStep;
+    const scope::TipPose tip = m_scope.tipPose();
+    const scope::HandleLoad load = m_scope.handleLoad();
+    m_outputs.handleForce = -load.axialForce;
+    m_outputs.handleTorque = load.axialTorque;
+    m_outputs.tip = tip;
+
+    ProcedureFrame& f = m_frame;
+    f.time = m_time;
+    f.input = m_input;
+    f.tipPosition = tip.position;
+    f.tipDirection = tip.rotation.col(2);
+    if (m_steps % kLoopDetectionInterval == 0) {
+        m_loops.update(m_scopeNow, m_input.insertion);
+    }
+    f.loop = m_loops.current();
+    f.tipArcLength = m_loops.signals().tipArcLength;
+    const geometry::CentrelineSample at = geometry::sampleCentreline(m_anatomy.centreline, f.tipArcLength);
+    f.tipSegment = at.segment;
+    f.colonTangentAtTip = at.tangent;
+
+    const contact::ContactResult& contacts = m_contact.result();
+    f.maxWallForce = contacts.maxWallForce;
+    const Eigen::Index tipSegment = m_scopeNow.cols() - 2;
+    for (const contact::ScopeContact& c : contacts.contacts) {
+        // The lens is against the wall: a contact near the tip on a wall that faces it.
+        if (c.segment == tipSegment && c.segmentParam > 0.7 && c.normal.dot(f.tipDirection) < -0.5) {
+            f.lensWallDistance = 0.0;
+        }
+    }
+    f.handleForce = m_outputs.handleForce;
+    f.handleTorque = m_outputs.handleTorque;
+    const physics::Positions& x = m_colon.body.positions();
+    const DiscomfortInput pain{m_colon.insufflation != nullptr ? m_colon.insufflation->pressure() : 0.0,
+                               m_colon.mesentery->maxStrain(x),
+                               m_settings.tissue.wallYoungModulus *
+                                   m_colon.springs->maxTensileStrain(x, physics::SpringFamily::Structural)};
+    f.mesenteryStrain = pain.mesenteryStrain;
+    f.discomfort = m_discomfort.update(pain, dt);
+    f.perforation = m_discomfort.perforates(pain);
+}
+
+}  // namespace colonosim::procedure

@@ -1,0 +1,112 @@
+#pragma once
+/// \file
+/// The fixed-step procedure loop (1 kHz by default; dt never comes from the
+/// wall clock). One step turns one InputSample into motion, forces and a
+/// recorded frame:
+///   1. the input is validated at the device boundary (a refused sample is
+///      recorded as an event and the last valid one is used);
+///   2. the handle (insertion, shaft rotation) and the dials drive the scope;
+///   3. scope-wall contact is computed on the current shapes (continuous
+///      detection against the previous scope positions; a sleeping wall is
+///      still a wall, so the whole wall is searched); ContactCoupling turns
+///      it into the scope's node loads (one Newton step with the rod's
+///      compliance) and into a force term on the wall (WallContactForce)
+///      that meets the scope through the same compliance over the substeps;
+///   The colon is first settled to static equilibrium under gravity and
+///   insufflation, so nodes at rest may sleep.
+///   4. the scope's chain solver runs its iterations; the colon advances one
+///      loop step with the substeps its stability bound asks for;
+///   5. outputs: the handle force and torque (the base load of the chain),
+///      the tip pose, the loop state, discomfort and perforation, handed to
+///      the recorder; the raw input is appended to the trace.
+/// Air and suction change the insufflation pressure at declared rates.
+/// Everything is deterministic: the same case, build and input trace give a
+/// bit-identical recording.
+
+#include "simcore/contact/ScopeWallContact.h"
+#include "simcore/contact/WallContactForce.h"
+#include "simcore/geometry/ColonAnatomy.h"
+#include "simcore/physics/ActiveRegion.h"
+#include "simcore/physics/ColonBody.h"
+#include "simcore/physics/TissueSimulation.h"
+#include "simcore/procedure/ContactCoupling.h"
+#include "simcore/procedure/Discomfort.h"
+#include "simcore/procedure/InputTrace.h"
+#include "simcore/procedure/LoopDetector.h"
+#include "simcore/procedure/Recorder.h"
+#include "simcore/scope/Colonoscope.h"
+
+#include <memory>
+
+namespace colonosim::procedure {
+
+struct ProcedureSettings {
+    physics::TissueParameters tissue;
+    physics::EnvironmentParameters environment;
+    physics::StiffnessCalibration calibration{0.5, 0.97};
+    physics::SteppingPolicy stepping;
+    bool activeRegion = true;
+    scope::ScopeParameters scope;
+    contact::ContactParameters contact;
+    RecorderParameters recorder;
+    DiscomfortParameters discomfort;
+    double insufflationRate = 266.6;  ///< Pa/s while air (or, negative, suction) is pressed (2 mmHg/s)
+    double maxInsufflation = 8000.0;  ///< Pa the insufflator never exceeds (60 mmHg)
+    /// m: the contact response moves a scope node at most this far per loop
+    /// step (0.5 mm per 1 ms = 0.5 m/s, the fastest insertion the contact
+    /// must handle; model choice, see ContactCoupling.h)
+    double contactStepLimit = 0.5e-3;
+};
+
+/// What a haptic device and the camera need after each step.
+struct ProcedureOutputs {
+    double handleForce = 0.0;   ///< N along the insertion direction (+ resists insertion)
+    double handleTorque = 0.0;  ///< N m about the shaft
+    scope::TipPose tip;
+};
+
+class ProcedureLoop {
+public:
+    /// Builds the colon body from `anatomy` (which must outlive the loop) and
+    /// the scope at the anus. Throws ParameterError for invalid settings.
+    ProcedureLoop(const geometry::ColonAnatomy& anatomy, const ProcedureSettings& settings);
+
+    /// One loop step; never throws.
+    const ProcedureOutputs& step(const InputSample& input);
+
+    [[nodiscard]] double time() const { return m_time; }
+    [[nodiscard]] const ProcedureOutputs& outputs() const { return m_outputs; }
+    [[nodiscard]] const ProcedureFrame& lastFrame() const { return m_frame; }
+    [[nodiscard]] const Recording& recording() const { return m_recorder.recording(); }
+    [[nodiscard]] const InputTrace& trace() const { return m_trace; }
+    [[nodiscard]] const scope::Colonoscope& scope() const { return m_scope; }
+    [[nodiscard]] const physics::ColonBody& colon() const { return m_colon; }
+    [[nodiscard]] const LoopDetector& loops() const { return m_loops; }
+    [[nodiscard]] const physics::TissueSimulation& tissue() const { return *m_simulation; }
+
+private:
+    void applyContact();
+    void observe();
+
+    const geometry::ColonAnatomy& m_anatomy;
+    ProcedureSettings m_settings;
+    physics::ColonBody m_colon;
+    std::unique_ptr<physics::TissueSimulation> m_simulation;
+    std::unique_ptr<physics::ActiveRegion> m_region;
+    scope::Colonoscope m_scope;
+    contact::ScopeWallContact m_contact;
+    contact::WallContactForce* m_wallContact = nullptr;
+    ContactCoupling m_coupling;
+    LoopDetector m_loops;
+    DiscomfortModel m_discomfort;
+    Recorder m_recorder;
+    InputTrace m_trace;
+    InputSample m_input;
+    ProcedureFrame m_frame;
+    ProcedureOutputs m_outputs;
+    Eigen::Matrix3Xd m_scopeNow, m_scopePrevious, m_scopeVelocity;
+    double m_time = 0.0;
+    long m_steps = 0;
+};
+
+}  // namespace colonosim::procedure

@@ -1,0 +1,147 @@
+// The coupled procedure loop on the default colon: it stays stable under the
+// scripted expert and under hard input, refuses bad device input at the
+// boundary, and a recorded input trace replays to a bit-identical recording.
+
+#include "simcore/procedure/ProcedureLoop.h"
+#include "simcore/geometry/ProceduralColon.h"
+#include "simcore/procedure/Operator.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <memory>
+
+namespace {
+
+using namespace colonosim;
+using procedure::InputSample;
+using procedure::ProcedureLoop;
+using procedure::ProcedureSettings;
+
+const geometry::ColonAnatomy& defaultColon()
+{
+    static const geometry::ColonAnatomy anatomy =
+        geometry::buildProceduralColon(geometry::AnatomyParameters{});
+    return anatomy;
+}
+
+struct RunSummary {
+    double peakHandleForce = 0.0;  ///< N
+    double peakLoad = 0.0;         ///< N, largest contact load on one scope node
+    bool finite = true;
+};
+
+void observe(const ProcedureLoop& loop, RunSummary& summary)
+{
+    const procedure::ProcedureOutputs& out = loop.outputs();
+    summary.finite = summary.finite && std::isfinite(out.handleForce) && std::isfinite(out.handleTorque) &&
+                     out.tip.position.allFinite() && loop.colon().body.positions().allFinite();
+    summary.peakHandleForce = std::max(summary.peakHandleForce, std::abs(out.handleForce));
+    for (const Eigen::Vector3d& p : loop.scope().nodePositions()) {
+        summary.finite = summary.finite && p.allFinite();
+    }
+}
+
+RunSummary runOperator(ProcedureLoop& loop, procedure::Operator& driver, int steps)
+{
+    RunSummary summary;
+    for (int s = 0; s < steps && !driver.finished(); ++s) {
+        loop.step(driver.next(loop));
+        observe(loop, summary);
+    }
+    return summary;
+}
+
+// Three seconds of the expert: the scope reaches the rectal curve and touches
+// the wall. No tissue step is rejected, nothing is non-finite, and the handle
+// force stays within the haptic device's 25 N.
+TEST(ProcedureLoop, TheExpertRunsStably)
+{
+    ProcedureLoop loop(defaultColon(), ProcedureSettings{});
+    procedure::ScriptedOperator expert(procedure::expertStyle());
+    const RunSummary summary = runOperator(loop, expert, 3500);
+    EXPECT_TRUE(summary.finite);
+    EXPECT_EQ(loop.tissue().rejectedSteps(), 0);
+    EXPECT_LT(summary.peakHandleForce, 25.0);
+    EXPECT_GT(loop.scope().numInsertedNodes(), 4) << "the scope went in";
+    EXPECT_GT(loop.recording().samples.size(), 300U) << "100 Hz samples";
+}
+
+// A session is determined by the case, the build and the input trace:
+// replaying the recorded trace gives the same recording, bit for bit.
+TEST(ProcedureLoop, ReplayIsBitIdentical)
+{
+    ProcedureLoop first(defaultColon(), ProcedureSettings{});
+    procedure::ScriptedOperator novice(procedure::noviceStyle());
+    runOperator(first, novice, 2500);
+    ProcedureLoop second(defaultColon(), ProcedureSettings{});
+    procedure::ReplayOperator replay(first.trace());
+    runOperator(second, replay, 10000);
+    ASSERT_EQ(second.trace().samples.size(), first.trace().samples.size());
+    EXPECT_EQ(second.recording().canonicalText(), first.recording().canonicalText());
+    EXPECT_FALSE(first.recording().canonicalText().empty());
+}
+
+// NaN and huge device input is refused at the boundary (an input_rejected
+// event names the field), the loop keeps the last valid sample, and nothing
+// downstream sees the bad value.
+TEST(ProcedureLoop, BadDeviceInputIsRejectedAtTheBoundary)
+{
+    ProcedureLoop loop(defaultColon(), ProcedureSettings{});
+    InputSample input;
+    RunSummary summary;
+    for (int s = 0; s < 600; ++s) {
+        input.insertion = 0.05 * s / 600.0;
+        InputSample sent = input;
+        if (s == 300) {
+            sent.insertion = std::numeric_limits<double>::quiet_NaN();
+        } else if (s == 301) {
+            sent.dialUpDown = 1e9;
+        } else if (s == 302) {
+            sent.rotation = -std::numeric_limits<double>::infinity();
+        }
+        loop.step(sent);
+        observe(loop, summary);
+        if (s >= 300 && s <= 302) {
+            EXPECT_TRUE(loop.lastFrame().inputRejected) << s;
+            EXPECT_TRUE(std::isfinite(loop.lastFrame().input.insertion));
+        }
+    }
+    EXPECT_TRUE(summary.finite);
+    int rejected = 0;
+    for (const auto& e : loop.recording().events) {
+        rejected += e.kind == procedure::EventKind::InputRejected ? 1 : 0;
+    }
+    EXPECT_EQ(rejected, 3);
+    EXPECT_EQ(loop.trace().samples.size(), 600U) << "the raw input, bad samples included, is in the trace";
+}
+
+// Hard case: full dial deflection while the tip is jammed against the rectal
+// wall and the operator keeps pushing at 10 cm/s and twisting. The tissue's
+// step check may reject a violent step (a wall node flung faster than
+// maxNodeSpeed): it keeps the last good state, refines the substeps and goes
+// on. Asserted: everything stays finite and bounded, the safeguard engages in
+// under 1% of the steps, and each rejection carries its diagnostic.
+TEST(ProcedureLoop, FullDialsWhileJammedStayStable)
+{
+    ProcedureLoop loop(defaultColon(), ProcedureSettings{});
+    InputSample input;
+    RunSummary summary;
+    for (int s = 0; s < 3000; ++s) {
+        input.insertion = std::min(0.25, 0.1 * s / 1000.0);  // pushes on past the curve at 10 cm/s
+        input.dialUpDown = 3.5;                              // beyond the clinical limit: clamped
+        input.dialLeftRight = s < 1500 ? 3.5 : -3.5;
+        input.rotation = 2.0 * s / 3000.0;  // and twists
+        loop.step(input);
+        observe(loop, summary);
+    }
+    EXPECT_TRUE(summary.finite);
+    EXPECT_LT(loop.tissue().rejectedSteps(), 30);
+    for (const auto& r : loop.tissue().rejections()) {
+        EXPECT_NE(r.message.find("rejected"), std::string::npos);
+    }
+    EXPECT_LT(summary.peakHandleForce, 50.0);
+}
+
+}  // namespace

@@ -1,0 +1,112 @@
+/// \file
+/// `colonosim run --default|--case FILE --operator expert|novice|replay:TRACE --out DIR [--json] [--max-time S]`:
+/// one procedure on the default colon, driven by a scripted operator or by a
+/// recorded input trace. Writes DIR/session.trace (the input trace),
+/// DIR/samples.csv, DIR/events.csv and DIR/recording.txt (the canonical
+/// recording: two runs are bit-identical when these files are equal), and
+/// prints a summary: time to cecum, loops by type, peak handle force, peak
+/// discomfort.
+
+#include "simcore/geometry/ProceduralColon.h"
+#include "simcore/procedure/Operator.h"
+#include "trainer_ui/cli/CommandLine.h"
+#include "trainer_ui/cli/Commands.h"
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+
+namespace colonosim::cli {
+
+namespace {
+nlohmann::json summarise(const procedure::Recording& recording, double duration)
+{
+    nlohmann::json out;
+    out["duration_s"] = duration;
+    out["time_to_cecum_s"] = nullptr;
+    std::map<std::string, int> loops;
+    for (const auto& e : recording.events) {
+        if (e.kind == procedure::EventKind::CecumReached && out["time_to_cecum_s"].is_null()) {
+            out["time_to_cecum_s"] = e.time;
+        }
+        if (e.kind == procedure::EventKind::LoopFormed) {
+            ++loops[e.detail];
+        }
+    }
+    double peakForce = 0.0;
+    double peakDiscomfort = 0.0;
+    double looped = 0.0;
+    for (size_t k = 0; k < recording.samples.size(); ++k) {
+        const auto& s = recording.samples[k];
+        peakForce = std::max(peakForce, s.handleForce);
+        peakDiscomfort = std::max(peakDiscomfort, s.discomfort);
+        if (s.loop != procedure::LoopKind::None && k + 1 < recording.samples.size()) {
+            looped += recording.samples[k + 1].time - s.time;
+        }
+    }
+    out["loops_by_type"] = loops;
+    out["looped_time_s"] = looped;
+    out["peak_handle_force_N"] = peakForce;
+    out["peak_discomfort"] = peakDiscomfort;
+    out["events"] = recording.events.size();
+    return out;
+}
+}  // namespace
+
+int runProcedure(std::span<char* const> args)
+{
+    const CommandLine line(args, {"--default", "--json", "--help"}, {"--case", "--operator", "--out", "--max-time"});
+    if (line.has("--help")) {
+        std::cout << "usage: colonosim run --default|--case FILE --operator expert|novice|replay:TRACE --out DIR\n"
+                     "                     [--json] [--max-time S]\n"
+                     "One procedure at 1 kHz; writes session.trace, samples.csv, events.csv, recording.txt to DIR.\n"
+                     "  --max-time S   stop after S simulated seconds, 1-3600 (default 900)\n";
+        return 0;
+    }
+    if (line.value("--case")) {
+        throw UsageError("--case FILE: case files arrive with the case generator; use --default for now");
+    }
+    if (!line.has("--default")) {
+        throw UsageError("choose the colon: --default (or --case FILE once case files exist)");
+    }
+    const std::optional<std::string> operatorName = line.value("--operator");
+    const std::optional<std::string> out = line.value("--out");
+    if (!operatorName || !out) {
+        throw UsageError("--operator and --out are required (see --help)");
+    }
+    const double maxTime = line.number("--max-time", 900.0, 1.0, 3600.0, "s");
+    std::unique_ptr<procedure::Operator> driver = procedure::makeOperator(*operatorName);
+    std::filesystem::create_directories(*out);
+
+    const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(geometry::AnatomyParameters{});
+    procedure::ProcedureLoop loop(anatomy, procedure::ProcedureSettings{});
+    const auto steps = static_cast<long>(maxTime / loop.trace().loopStep);
+    for (long s = 0; s < steps && !driver->finished(); ++s) {
+        loop.step(driver->next(loop));
+    }
+    const std::filesystem::path dir(*out);
+    procedure::writeTrace(dir / "session.trace", loop.trace());
+    loop.recording().writeCsv(dir / "samples.csv", dir / "events.csv");
+    std::ofstream(dir / "recording.txt") << loop.recording().canonicalText();
+
+    const nlohmann::json summary = summarise(loop.recording(), loop.time());
+    if (line.has("--json")) {
+        std::cout << summary.dump(2) << '\n';
+    } else {
+        std::cout << "procedure: " << loop.time() << " s simulated, operator " << *operatorName << '\n'
+                  << "time to cecum: "
+                  << (summary["time_to_cecum_s"].is_null() ? std::string("not reached")
+                                                           : std::to_string(summary["time_to_cecum_s"].get<double>()) + " s")
+                  << '\n'
+                  << "loops: " << summary["loops_by_type"].dump() << ", looped " << summary["looped_time_s"] << " s\n"
+                  << "peak handle force: " << summary["peak_handle_force_N"] << " N; peak discomfort "
+                  << summary["peak_discomfort"] << " / 10\n"
+                  << "written: " << (dir / "session.trace").string() << ", samples.csv, events.csv, recording.txt\n";
+    }
+    return 0;
+}
+
+}  // namespace colonosim::cli
