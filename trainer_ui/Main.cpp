@@ -23,7 +23,9 @@ void printUsage()
                  "  params      declared physical parameters with units, ranges and sources\n"
                  "  mesh        import and check a patient-specific colon surface\n"
                  "  bench       speed-versus-error report: bench [--quick] --out DIR\n"
-                 "  rod         cantilever equilibrium of the colonoscope's rod model, as JSON\n";
+                 "  rod         cantilever equilibrium of the colonoscope's rod model, as JSON\n"
+                 "  case        patient cases: case generate|validate|stats (randomized from population "
+                 "statistics)\n";
 }
 }  // namespace
 
@@ -52,6 +54,9 @@ int main(int argc, char** argv)
         }
         if (command == "rod") {
             return cli::runRod(rest);
+        }
+        if (command == "case") {
+            return cli::runCase(rest);
         }
         std::cerr << "colonosim: unknown subcommand \"" << command << "\" (see colonosim --help)\n";
         return 2;

@@ -12,5 +12,6 @@ int runParams(std::span<char* const> args);
 int runMesh(std::span<char* const> args);
 int runBench(std::span<char* const> args);
 int runRod(std::span<char* const> args);
+int runCase(std::span<char* const> args);
 
 }  // namespace colonosim::cli
