@@ -196,9 +196,7 @@ std::optional<std::string> Constraints::impossibility(const Statistics& stats) c
             }
         }
         for (const RequireTerm& other : require.terms()) {
-            if (other.kind != RequireTerm::Kind::Metric && term.kind != RequireTerm::Kind::Metric &&
-                other.negated != term.negated &&
-                other.text == (term.negated ? term.text.substr(4) : term.text) && !term.negated) {
+            if (!term.negated && other.negated && other.text == "not " + term.text) {
                 return term.text + " and " + other.text + " contradict each other";
             }
         }

@@ -28,6 +28,13 @@ Random::Random(std::uint64_t seed, std::uint64_t attempt)
     }
 }
 
+Random Random::fromState(const std::array<std::uint64_t, 4>& state)
+{
+    Random random;
+    random.m_s = state;
+    return random;
+}
+
 std::uint64_t Random::next()
 {
     const std::uint64_t result = rotl(m_s[1] * 5, 7) * 9;

@@ -13,6 +13,7 @@
 /// - choose(weights): the first index whose running sum exceeds u times the
 ///   total; sums in index order, so the result is fixed by the weights.
 
+#include <array>
 #include <cstdint>
 #include <span>
 
@@ -22,6 +23,8 @@ class Random {
 public:
     /// The stream for attempt `attempt` of the case with seed `seed`.
     Random(std::uint64_t seed, std::uint64_t attempt);
+    /// A generator with the given xoshiro256** state (not all zero), for the reference tests.
+    [[nodiscard]] static Random fromState(const std::array<std::uint64_t, 4>& state);
 
     [[nodiscard]] std::uint64_t next();
     [[nodiscard]] double uniform();
@@ -34,7 +37,8 @@ public:
     [[nodiscard]] std::size_t choose(std::span<const double> weights);
 
 private:
-    std::uint64_t m_s[4];
+    Random() = default;
+    std::array<std::uint64_t, 4> m_s{};
 };
 
 /// SplitMix64's output function (Steele, Lea & Flood 2014).

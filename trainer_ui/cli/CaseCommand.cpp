@@ -166,7 +166,7 @@ int generate(std::span<char* const> args)
     writeCaseFile(c, *out);
     std::cout << "wrote " << *out << ": " << c.patient.givenName << " " << c.patient.familyName << ", "
               << nameOf(c.patient.sex) << ", " << c.patient.age << " years, BMI "
-              << formatFixed(c.patient.bmi, 1) << " kg/m^2, " << c.lesions.size() << " lesions, difficulty "
+              << formatFixed(c.patient.bmi, 1) << " kg/m^2, lesions " << c.lesions.size() << ", difficulty "
               << c.difficulty.level << ", task " << nameOf(c.task) << " (seed " << seed << ", attempt "
               << c.provenance.attempt << ")\n";
     return 0;
