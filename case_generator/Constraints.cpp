@@ -57,8 +57,6 @@ std::string formatBound(double x)
 std::map<std::string, Interval> metricSupport(const Statistics& stats)
 {
     using geometry::AnatomyParameters;
-    geometry::AnatomyParameters lo;
-    geometry::AnatomyParameters hi;
     double minTotal = 0.0;
     double maxTotal = 0.0;
     for (const auto& field : AnatomyParameters::fields().first(geometry::kNumSegments)) {
