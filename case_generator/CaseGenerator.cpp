@@ -16,7 +16,13 @@ bool CaseGenerator::attempt(std::uint64_t seed, std::uint64_t attemptNumber, con
     const Statistics& stats = m_stats;
     const RequireExpression& require = constraints.require;
     Random random(seed, attemptNumber);
-    if (!samplePatient(stats, constraints, random, c.patient) || !require.holdsAt(Stage::Patient, c, stats)) {
+    if (!samplePatient(stats, constraints, random, c.patient)) {
+        // BMI depends on sex only: a range it misses that often is as good as impossible.
+        throw ImpossibleConstraints("impossible constraints: no BMI drawn in " +
+                                    std::to_string(kBmiDrawBudget) + " draws met \"" + constraints.text() +
+                                    "\"; such a BMI is rarer than 1 in " + std::to_string(kBmiDrawBudget));
+    }
+    if (!require.holdsAt(Stage::Patient, c, stats)) {
         return false;
     }
     c.indication = sampleIndication(stats, random);

@@ -37,7 +37,8 @@ public:
 
     /// Throws ImpossibleConstraints.
     [[nodiscard]] Case generate(std::uint64_t seed, const Constraints& constraints = {}) const;
-    /// One attempt; false when it is rejected. `c` is then partly filled.
+    /// One attempt; false when it is rejected (`c` is then partly filled).
+    /// Throws ImpossibleConstraints when the BMI range is out of reach.
     [[nodiscard]] bool attempt(std::uint64_t seed, std::uint64_t attemptNumber,
                                const Constraints& constraints, Case& c) const;
     [[nodiscard]] const Statistics& statistics() const { return m_stats; }

@@ -7,10 +7,6 @@
 
 namespace colonosim::cases {
 
-namespace {
-constexpr int kBmiDrawBudget = 100000;
-}  // namespace
-
 bool samplePatient(const Statistics& stats, const Constraints& constraints, Random& random, Patient& patient)
 {
     patient.sex =

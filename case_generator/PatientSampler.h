@@ -19,8 +19,10 @@
 
 namespace colonosim::cases {
 
-/// Draws the patient; false when the BMI range could not be met within the
-/// per-attempt draw budget (the attempt is then rejected).
+/// BMI draws per patient before the BMI range is judged out of reach.
+inline constexpr int kBmiDrawBudget = 100000;
+
+/// Draws the patient; false when no BMI in kBmiDrawBudget draws met the range.
 [[nodiscard]] bool samplePatient(const Statistics& stats, const Constraints& constraints, Random& random,
                                  Patient& patient);
 [[nodiscard]] Indication sampleIndication(const Statistics& stats, Random& random);

@@ -142,6 +142,11 @@ TEST(Constraints, ImpossibleSetsAreReported)
     Constraints thin;
     thin.bmiMax = 11.0;
     EXPECT_NE(reason(thin).find("no value of bmi"), std::string::npos);
+    // Inside the law's support, but out of reach: reported, not retried for ever.
+    Constraints rare;
+    rare.sex = Sex::Male;
+    rare.bmiMin = 80.0;  // a BMI written as 80.0: about 1 man in 2e7
+    EXPECT_NE(reason(rare).find("no BMI drawn in 100000 draws"), std::string::npos);
 }
 
 TEST(Constraints, ASetNoAttemptMeetsIsReportedAfterTheBudget)
