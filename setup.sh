@@ -11,6 +11,7 @@ cd "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")"
 # libqt6opengl6-dev and xauth are only Recommends of other packages, so they are named here.
 # zlib1g-dev: assimp's CMake targets link /usr/lib/x86_64-linux-gnu/libz.so, but libassimp-dev
 # does not depend on the package that ships it.
+# libxml2-utils: xmllint, with which the tests validate generated case files against their XSD.
 PACKAGES=(
     build-essential cmake ninja-build pkg-config git
     libeigen3-dev libbullet-dev libsqlite3-dev
@@ -18,7 +19,7 @@ PACKAGES=(
     libtinyxml2-dev libosmesa6-dev libassimp-dev zlib1g-dev nlohmann-json3-dev
     libgtest-dev libgmock-dev libbenchmark-dev
     libsodium-dev libzstd-dev
-    xvfb xauth poppler-utils
+    xvfb xauth poppler-utils libxml2-utils
 )
 
 BUILD_DIR=build

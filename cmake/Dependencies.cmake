@@ -4,6 +4,8 @@ find_package(PkgConfig REQUIRED)
 find_package(GTest REQUIRED)
 find_package(nlohmann_json 3.10 REQUIRED)
 find_package(assimp REQUIRED)
+# tinyxml2: the case files (case_generator); the shared-library CONFIG package.
+find_package(tinyxml2 REQUIRED)
 
 # Bullet: module mode only. The CONFIG package shipped by Debian has relative
 # paths and names a BulletInverseDynamics library that is not installed.

@@ -16,15 +16,18 @@
 namespace {
 void printUsage()
 {
-    std::cout << "usage: colonosim [SUBCOMMAND] [OPTIONS]\n"
-                 "With no subcommand: the headless demonstration (the trainer arrives later).\n"
-                 "Subcommands (each has --help):\n"
-                 "  demo        headless demonstration of the colon simulation\n"
-                 "  params      declared physical parameters with units, ranges and sources\n"
-                 "  mesh        import and check a patient-specific colon surface\n"
-                 "  bench       speed-versus-error report: bench [--quick] --out DIR\n"
-                 "  rod         cantilever equilibrium of the colonoscope's rod model, as JSON\n"
-                 "  run         one procedure: run --default --operator expert|novice|replay:TRACE --out DIR\n";
+    std::cout
+        << "usage: colonosim [SUBCOMMAND] [OPTIONS]\n"
+           "With no subcommand: the headless demonstration (the trainer arrives later).\n"
+           "Subcommands (each has --help):\n"
+           "  demo        headless demonstration of the colon simulation\n"
+           "  params      declared physical parameters with units, ranges and sources\n"
+           "  mesh        import and check a patient-specific colon surface\n"
+           "  bench       speed-versus-error report: bench [--quick] --out DIR\n"
+           "  rod         cantilever equilibrium of the colonoscope's rod model, as JSON\n"
+           "  run         one procedure: run --default --operator expert|novice|replay:TRACE --out DIR\n"
+           "  case        patient cases: case generate|validate|stats (randomized from population "
+           "statistics)\n";
 }
 }  // namespace
 
@@ -56,6 +59,9 @@ int main(int argc, char** argv)
         }
         if (command == "rod") {
             return cli::runRod(rest);
+        }
+        if (command == "case") {
+            return cli::runCase(rest);
         }
         std::cerr << "colonosim: unknown subcommand \"" << command << "\" (see colonosim --help)\n";
         return 2;

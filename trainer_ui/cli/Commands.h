@@ -13,5 +13,6 @@ int runMesh(std::span<char* const> args);
 int runBench(std::span<char* const> args);
 int runProcedure(std::span<char* const> args);
 int runRod(std::span<char* const> args);
+int runCase(std::span<char* const> args);
 
 }  // namespace colonosim::cli

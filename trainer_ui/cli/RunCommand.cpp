@@ -1,11 +1,9 @@
 /// \file
-/// `colonosim run --default|--case FILE --operator expert|novice|replay:TRACE --out DIR [--json] [--max-time S]`:
-/// one procedure on the default colon, driven by a scripted operator or by a
-/// recorded input trace. Writes DIR/session.trace (the input trace),
-/// DIR/samples.csv, DIR/events.csv and DIR/recording.txt (the canonical
-/// recording: two runs are bit-identical when these files are equal), and
-/// prints a summary: time to cecum, loops by type, peak handle force, peak
-/// discomfort.
+/// `colonosim run --default|--case FILE --operator expert|novice|replay:TRACE --out DIR [--json] [--max-time
+/// S]`: one procedure on the default colon, driven by a scripted operator or by a recorded input trace.
+/// Writes DIR/session.trace (the input trace), DIR/samples.csv, DIR/events.csv and DIR/recording.txt (the
+/// canonical recording: two runs are bit-identical when these files are equal), and prints a summary: time to
+/// cecum, loops by type, peak handle force, peak discomfort.
 
 #include "simcore/geometry/ProceduralColon.h"
 #include "simcore/procedure/Operator.h"
@@ -58,16 +56,20 @@ nlohmann::json summarise(const procedure::Recording& recording, double duration)
 
 int runProcedure(std::span<char* const> args)
 {
-    const CommandLine line(args, {"--default", "--json", "--help"}, {"--case", "--operator", "--out", "--max-time"});
+    const CommandLine line(args, {"--default", "--json", "--help"},
+                           {"--case", "--operator", "--out", "--max-time"});
     if (line.has("--help")) {
-        std::cout << "usage: colonosim run --default|--case FILE --operator expert|novice|replay:TRACE --out DIR\n"
-                     "                     [--json] [--max-time S]\n"
-                     "One procedure at 1 kHz; writes session.trace, samples.csv, events.csv, recording.txt to DIR.\n"
-                     "  --max-time S   stop after S simulated seconds, 1-3600 (default 900)\n";
+        std::cout
+            << "usage: colonosim run --default|--case FILE --operator expert|novice|replay:TRACE --out DIR\n"
+               "                     [--json] [--max-time S]\n"
+               "One procedure at 1 kHz; writes session.trace, samples.csv, events.csv, recording.txt to "
+               "DIR.\n"
+               "  --max-time S   stop after S simulated seconds, 1-3600 (default 900)\n";
         return 0;
     }
     if (line.value("--case")) {
-        throw UsageError("--case FILE: case files arrive with the case generator; use --default for now");
+        throw UsageError("--case FILE: generated cases (colonosim case generate) do not drive the procedure "
+                         "loop yet; use --default");
     }
     if (!line.has("--default")) {
         throw UsageError("choose the colon: --default (or --case FILE once case files exist)");
@@ -98,13 +100,16 @@ int runProcedure(std::span<char* const> args)
     } else {
         std::cout << "procedure: " << loop.time() << " s simulated, operator " << *operatorName << '\n'
                   << "time to cecum: "
-                  << (summary["time_to_cecum_s"].is_null() ? std::string("not reached")
-                                                           : std::to_string(summary["time_to_cecum_s"].get<double>()) + " s")
+                  << (summary["time_to_cecum_s"].is_null()
+                          ? std::string("not reached")
+                          : std::to_string(summary["time_to_cecum_s"].get<double>()) + " s")
                   << '\n'
-                  << "loops: " << summary["loops_by_type"].dump() << ", looped " << summary["looped_time_s"] << " s\n"
+                  << "loops: " << summary["loops_by_type"].dump() << ", looped " << summary["looped_time_s"]
+                  << " s\n"
                   << "peak handle force: " << summary["peak_handle_force_N"] << " N; peak discomfort "
                   << summary["peak_discomfort"] << " / 10\n"
-                  << "written: " << (dir / "session.trace").string() << ", samples.csv, events.csv, recording.txt\n";
+                  << "written: " << (dir / "session.trace").string()
+                  << ", samples.csv, events.csv, recording.txt\n";
     }
     return 0;
 }
