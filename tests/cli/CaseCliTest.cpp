@@ -149,3 +149,30 @@ TEST_F(CaseCli, StatsTableAndHelp)
 }
 
 }  // namespace
+
+namespace {
+
+// `colonosim run --case FILE` runs a generated case (its anatomy, wall and
+// environment); a broken case file is refused with its file:line errors.
+TEST_F(CaseCli, RunDrivesTheProcedureWithAGeneratedCase)
+{
+    const std::string file = path("case.xml");
+    ASSERT_EQ(runColonosim("case generate --seed 7 --out " + file).status, 0);
+    const auto run = runColonosim(
+        "run --case " + file + " --operator expert --max-time 1 --json --out " + path("run"), true);
+    ASSERT_EQ(run.status, 0) << run.output;
+    const nlohmann::json summary = nlohmann::json::parse(run.output);
+    EXPECT_NEAR(summary["duration_s"].get<double>(), 1.0, 1e-9);
+    EXPECT_TRUE(std::filesystem::exists(path("run") + "/session.trace"));
+
+    std::ofstream(path("bad.xml")) << "<case><patient></case>";
+    const auto bad =
+        runColonosim("run --case " + path("bad.xml") + " --operator expert --out " + path("run2"));
+    EXPECT_EQ(bad.status, 2);
+    EXPECT_NE(bad.output.find("bad.xml:"), std::string::npos) << bad.output;
+    const auto both =
+        runColonosim("run --default --case " + file + " --operator expert --out " + path("run3"));
+    EXPECT_EQ(both.status, 2);
+}
+
+}  // namespace

@@ -5,6 +5,8 @@
 /// canonical recording: two runs are bit-identical when these files are equal), and prints a summary: time to
 /// cecum, loops by type, peak handle force, peak discomfort.
 
+#include "case_generator/CaseReader.h"
+#include "case_generator/SceneSpec.h"
 #include "simcore/geometry/ProceduralColon.h"
 #include "simcore/procedure/Operator.h"
 #include "trainer_ui/cli/CommandLine.h"
@@ -67,12 +69,9 @@ int runProcedure(std::span<char* const> args)
                "  --max-time S   stop after S simulated seconds, 1-3600 (default 900)\n";
         return 0;
     }
-    if (line.value("--case")) {
-        throw UsageError("--case FILE: generated cases (colonosim case generate) do not drive the procedure "
-                         "loop yet; use --default");
-    }
-    if (!line.has("--default")) {
-        throw UsageError("choose the colon: --default (or --case FILE once case files exist)");
+    const std::optional<std::string> caseFile = line.value("--case");
+    if (caseFile.has_value() == line.has("--default")) {
+        throw UsageError("choose the colon: --default or --case FILE (one of them)");
     }
     const std::optional<std::string> operatorName = line.value("--operator");
     const std::optional<std::string> out = line.value("--out");
@@ -83,8 +82,26 @@ int runProcedure(std::span<char* const> args)
     std::unique_ptr<procedure::Operator> driver = procedure::makeOperator(*operatorName);
     std::filesystem::create_directories(*out);
 
-    const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(geometry::AnatomyParameters{});
-    procedure::ProcedureLoop loop(anatomy, procedure::ProcedureSettings{});
+    // A generated case sets the anatomy, the wall and the environment; its
+    // lesions, diverticula and adhesions are not yet part of the loop's physics.
+    procedure::ProcedureSettings settings;
+    geometry::AnatomyParameters anatomyParameters;
+    if (caseFile) {
+        const cases::ReadResult read = cases::readCaseFile(*caseFile);
+        if (!read.ok()) {
+            std::string message = "--case " + *caseFile + " is not a valid case:";
+            for (const std::string& error : read.errors) {
+                message += "\n  " + error;
+            }
+            throw UsageError(message);
+        }
+        const cases::SceneSpec scene = cases::toScene(*read.value);
+        anatomyParameters = scene.anatomy;
+        settings.tissue = scene.tissue;
+        settings.environment = scene.environment;
+    }
+    const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(anatomyParameters);
+    procedure::ProcedureLoop loop(anatomy, settings);
     const auto steps = static_cast<long>(maxTime / loop.trace().loopStep);
     for (long s = 0; s < steps && !driver->finished(); ++s) {
         loop.step(driver->next(loop));
