@@ -14,14 +14,11 @@ WallContactForce::WallContactForce(const geometry::TriangleMesh& wallMesh,
 void WallContactForce::setContacts(const std::vector<ScopeContact>& contacts,
                                    const std::vector<Eigen::Vector3d>& scopeAxisPoints, double radius)
 {
-    m_radius = radius;
-    m_contacts.clear();
-    for (size_t k = 0; k < contacts.size() && k < scopeAxisPoints.size(); ++k) {
-        const ScopeContact& c = contacts[k];
-        m_contacts.push_back(Active{m_mesh.triangles[static_cast<size_t>(c.triangle)], c.barycentric,
-                                    c.normal, scopeAxisPoints[k], -c.frictionForce,
-                                    m_parameters.contactStiffness, 0.0});
+    std::vector<WallContactPoint> rigid;
+    for (const Eigen::Vector3d& axisPoint : scopeAxisPoints) {
+        rigid.push_back({axisPoint, m_parameters.contactStiffness, 0.0, 1.0});
     }
+    setContacts(contacts, rigid, radius);
 }
 
 void WallContactForce::setContacts(const std::vector<ScopeContact>& contacts,

@@ -39,7 +39,8 @@ public:
 
     /// Takes this loop step's contacts; `scopeAxisPoints` are the scope axis
     /// points of the contacts (one per contact), `radius` the scope's, m.
-    /// The scope is rigid here: stiffness k_c, no offset.
+    /// The scope is rigid here: stiffness k_c, no offset (for tests and tools;
+    /// allocates, so the procedure loop uses the overload below).
     void setContacts(const std::vector<ScopeContact>& contacts,
                      const std::vector<Eigen::Vector3d>& scopeAxisPoints, double radius);
     /// The scope is compliant: each contact with its own stiffness and depth

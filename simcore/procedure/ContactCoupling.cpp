@@ -16,31 +16,47 @@ Eigen::Matrix3d skew(const Eigen::Vector3d& v)
 }
 }  // namespace
 
-void ContactCoupling::reset()
+namespace {
+/// Re-indexes per-node state after `added` nodes entered the rod at its base
+/// (negative: left it), keeping the tip end: new[i] = old[i - added]. In
+/// place, so a warm vector does not allocate.
+template <class T>
+void shiftToTip(std::vector<T>& v, int numNodes, int added, const T& empty)
 {
-    m_load.clear();
-    m_normal.clear();
-    m_triangle.clear();
-    m_loads.resize(3, 0);
+    const int old = static_cast<int>(v.size());
+    v.resize(static_cast<size_t>(std::max(old, numNodes)), empty);
+    const auto at = [&](int i) -> T { return i >= 0 && i < old ? v[static_cast<size_t>(i)] : empty; };
+    if (added > 0) {
+        for (int i = numNodes - 1; i >= 0; --i) {
+            v[static_cast<size_t>(i)] = at(i - added);  // reads below i: not yet overwritten
+        }
+    } else {
+        for (int i = 0; i < numNodes; ++i) {
+            v[static_cast<size_t>(i)] = at(i - added);  // reads at or above i
+        }
+    }
+    v.resize(static_cast<size_t>(numNodes));
 }
+}  // namespace
 
 void ContactCoupling::align(int numNodes, int addedAtBase)
 {
-    const auto n = static_cast<size_t>(numNodes);
-    std::vector<Eigen::Vector3d> load(n, Eigen::Vector3d::Zero());
-    std::vector<Eigen::Vector3d> normal(n, Eigen::Vector3d::Zero());
-    std::vector<int> triangle(n, -1);
-    for (int i = 0; i < numNodes; ++i) {
-        const int old = i - addedAtBase;
-        if (old >= 0 && old < static_cast<int>(m_load.size())) {
-            load[static_cast<size_t>(i)] = m_load[static_cast<size_t>(old)];
-            normal[static_cast<size_t>(i)] = m_normal[static_cast<size_t>(old)];
-            triangle[static_cast<size_t>(i)] = m_triangle[static_cast<size_t>(old)];
-        }
+    shiftToTip(m_load, numNodes, addedAtBase, Eigen::Vector3d::Zero().eval());
+    shiftToTip(m_normal, numNodes, addedAtBase, Eigen::Vector3d::Zero().eval());
+    shiftToTip(m_triangle, numNodes, addedAtBase, -1);
+}
+
+void ContactCoupling::reserve(int numNodes)
+{
+    if (m_delassus.rows() >= numNodes) {
+        return;
     }
-    m_load.swap(load);
-    m_normal.swap(normal);
-    m_triangle.swap(triangle);
+    // Grows to the longest inserted scope once; every later step reuses it.
+    m_delassus.resize(numNodes, numNodes);
+    m_system.resize(numNodes, numNodes);
+    for (Eigen::VectorXd* v : {&m_raw, &m_previous, &m_lambda, &m_fixedDelta, &m_coupling, &m_rhs}) {
+        v->resize(numNodes);
+    }
 }
 
 void ContactCoupling::buildCompliance(const scope::DiscreteRod& rod)
@@ -63,7 +79,6 @@ void ContactCoupling::buildCompliance(const scope::DiscreteRod& rod)
     // G_ab = n_a^T C_ab n_b, C_ab = X_a^T A X_b - X_a^T B - B^T X_b + C from
     // the prefix sums up to joint min(a, b) - 1 (X = [x]x, X^T = -X).
     const auto m = static_cast<Eigen::Index>(m_active.size());
-    m_delassus.resize(m, m);
     for (Eigen::Index a = 0; a < m; ++a) {
         const auto na = static_cast<size_t>(m_active[static_cast<size_t>(a)]);
         const Eigen::Vector3d& ua = m_normal[na];
@@ -87,42 +102,46 @@ void ContactCoupling::solveNormalForces()
     // nodes that would pull are fixed at zero and the rest re-solved (at most
     // a few rounds; the set only shrinks).
     const auto m = static_cast<Eigen::Index>(m_active.size());
-    m_lambda = m_previous;
-    std::vector<char> free(static_cast<size_t>(m), 1);
+    const auto g = m_delassus.topLeftCorner(m, m);
+    auto lambda = m_lambda.head(m);
+    const auto previous = m_previous.head(m);
+    lambda = previous;
+    m_free.assign(static_cast<size_t>(m), 1);
     for (int round = 0; round < 4 && m > 0; ++round) {
-        std::vector<Eigen::Index> index;
+        m_freeIndex.clear();
         for (Eigen::Index a = 0; a < m; ++a) {
-            if (free[static_cast<size_t>(a)] != 0) {
-                index.push_back(a);
+            if (m_free[static_cast<size_t>(a)] != 0) {
+                m_freeIndex.push_back(a);
             }
         }
-        const auto f = static_cast<Eigen::Index>(index.size());
-        Eigen::VectorXd fixedDelta = Eigen::VectorXd::Zero(m);
+        const auto f = static_cast<Eigen::Index>(m_freeIndex.size());
+        auto fixedDelta = m_fixedDelta.head(m);
         for (Eigen::Index a = 0; a < m; ++a) {
-            if (free[static_cast<size_t>(a)] == 0) {
-                fixedDelta[a] = -m_previous[a];
-            }
+            fixedDelta[a] = m_free[static_cast<size_t>(a)] == 0 ? -previous[a] : 0.0;
         }
-        const Eigen::VectorXd coupling = m_stiffness * (m_delassus * fixedDelta);
-        Eigen::MatrixXd system(f, f);
-        Eigen::VectorXd rhs(f);
+        auto coupling = m_coupling.head(m);
+        coupling.noalias() = g * fixedDelta;
+        coupling *= m_stiffness;
+        auto rhs = m_rhs.head(f);
         for (Eigen::Index r = 0; r < f; ++r) {
             for (Eigen::Index c = 0; c < f; ++c) {
-                system(r, c) =
-                    m_stiffness * m_delassus(index[static_cast<size_t>(r)], index[static_cast<size_t>(c)]);
+                m_system(r, c) =
+                    m_stiffness * g(m_freeIndex[static_cast<size_t>(r)], m_freeIndex[static_cast<size_t>(c)]);
             }
-            system(r, r) += 1.0;
-            const Eigen::Index a = index[static_cast<size_t>(r)];
-            rhs[r] = m_raw[a] - m_previous[a] - coupling[a];
+            m_system(r, r) += 1.0;
+            const Eigen::Index a = m_freeIndex[static_cast<size_t>(r)];
+            rhs[r] = m_raw[a] - previous[a] - coupling[a];
         }
-        const Eigen::VectorXd delta = system.llt().solve(rhs);
+        Eigen::Ref<Eigen::MatrixXd> system = m_system.topLeftCorner(f, f);
+        Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>> factor(system);  // in place, no allocation
+        factor.solveInPlace(rhs);                                // rhs is now delta
         bool pulled = false;
-        m_lambda = m_previous + fixedDelta;
+        lambda = previous + fixedDelta;
         for (Eigen::Index r = 0; r < f; ++r) {
-            const Eigen::Index a = index[static_cast<size_t>(r)];
-            m_lambda[a] = m_previous[a] + delta[r];
-            if (m_lambda[a] < 0.0) {
-                free[static_cast<size_t>(a)] = 0;
+            const Eigen::Index a = m_freeIndex[static_cast<size_t>(r)];
+            lambda[a] = previous[a] + rhs[r];
+            if (lambda[a] < 0.0) {
+                m_free[static_cast<size_t>(a)] = 0;
                 pulled = true;
             }
         }
@@ -130,15 +149,15 @@ void ContactCoupling::solveNormalForces()
             break;
         }
     }
-    m_lambda = m_lambda.cwiseMax(0.0);
+    lambda = lambda.cwiseMax(0.0);
     // Trust region: the contact response of one loop step moves no node by
     // more than maxStep along its own normal (a contact-driven speed limit,
     // on the diagonal G_aa); the rest of the way is taken in later steps.
     for (Eigen::Index a = 0; a < m; ++a) {
-        const double change = m_lambda[a] - m_previous[a];
-        const double moved = m_delassus(a, a) * std::abs(change);
+        const double change = lambda[a] - previous[a];
+        const double moved = g(a, a) * std::abs(change);
         if (moved > m_maxStep) {
-            m_lambda[a] = m_previous[a] + change * (m_maxStep / moved);
+            lambda[a] = previous[a] + change * (m_maxStep / moved);
         }
     }
 }
@@ -149,10 +168,14 @@ void ContactCoupling::update(const contact::ContactResult& raw, const scope::Dis
 {
     const int n = rod.numNodes();
     align(n, addedAtBase);
+    reserve(n);
     const auto size = static_cast<size_t>(n);
-    std::vector<Eigen::Vector3d> rawNormal(size, Eigen::Vector3d::Zero());
-    std::vector<Eigen::Vector3d> rawFriction(size, Eigen::Vector3d::Zero());
-    std::vector<double> strongest(size, 0.0);
+    std::vector<Eigen::Vector3d>& rawNormal = m_rawNormal;
+    std::vector<Eigen::Vector3d>& rawFriction = m_rawFriction;
+    std::vector<double>& strongest = m_strongest;
+    rawNormal.assign(size, Eigen::Vector3d::Zero());
+    rawFriction.assign(size, Eigen::Vector3d::Zero());
+    strongest.assign(size, 0.0);
     for (const contact::ScopeContact& c : raw.contacts) {
         for (int end = 0; end < 2; ++end) {
             const int node = std::min(c.segment + end, n - 1);
@@ -170,14 +193,13 @@ void ContactCoupling::update(const contact::ContactResult& raw, const scope::Dis
         }
     }
     m_active.clear();
-    std::vector<double> rawValue;
     for (int node = 0; node < n; ++node) {
         const auto i = static_cast<size_t>(node);
         const double magnitude = rawNormal[i].norm();
         if (magnitude > 0.0) {
             m_normal[i] = rawNormal[i] / magnitude;
+            m_raw[static_cast<Eigen::Index>(m_active.size())] = magnitude;
             m_active.push_back(node);
-            rawValue.push_back(magnitude);
         } else if (m_load[i].squaredNorm() > 0.0 && m_triangle[i] >= 0) {
             // Released? The narrow phase found no contact, so the depth is at
             // most zero; the signed gap to the last triangle's plane says how far.
@@ -190,14 +212,12 @@ void ContactCoupling::update(const contact::ContactResult& raw, const scope::Dis
                 planeNormal = -planeNormal;
             }
             m_normal[i] = planeNormal;
+            m_raw[static_cast<Eigen::Index>(m_active.size())] =
+                std::min(0.0, m_stiffness * (radius - (rod.position[i] - a).dot(planeNormal)));
             m_active.push_back(node);
-            rawValue.push_back(
-                std::min(0.0, m_stiffness * (radius - (rod.position[i] - a).dot(planeNormal))));
         }
     }
     const auto m = static_cast<Eigen::Index>(m_active.size());
-    m_raw = Eigen::Map<const Eigen::VectorXd>(rawValue.data(), m);
-    m_previous.resize(m);
     for (Eigen::Index a = 0; a < m; ++a) {
         const auto i = static_cast<size_t>(m_active[static_cast<size_t>(a)]);
         m_previous[a] = std::max(0.0, m_load[i].dot(m_normal[i]));
@@ -214,7 +234,7 @@ void ContactCoupling::update(const contact::ContactResult& raw, const scope::Dis
     for (Eigen::Index a = 0; a < m; ++a) {
         const auto i = static_cast<size_t>(m_active[static_cast<size_t>(a)]);
         m_compliance[i] = m_delassus(a, a);
-        m_deflection[i] = m_delassus.row(a).dot(m_lambda);
+        m_deflection[i] = m_delassus.row(a).head(m).dot(m_lambda.head(m));
         m_load[i] = m_lambda[a] * m_normal[i];
         Eigen::Vector3d load = m_load[i];
         if (m_raw[a] > 0.0) {

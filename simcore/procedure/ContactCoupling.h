@@ -77,15 +77,17 @@ public:
     [[nodiscard]] const std::vector<contact::WallContactPoint>& wallPoints() const { return m_wallPoints; }
     /// Normal load carried by each node, N (world).
     [[nodiscard]] const std::vector<Eigen::Vector3d>& normalLoads() const { return m_load; }
-    /// G_aa of each node this step, m/N (0 for nodes out of contact).
-    [[nodiscard]] const std::vector<double>& compliance() const { return m_compliance; }
     /// The nodes in this step's update and their Delassus matrix G, m/N.
     [[nodiscard]] const std::vector<int>& activeNodes() const { return m_active; }
-    [[nodiscard]] const Eigen::MatrixXd& delassus() const { return m_delassus; }
-    void reset();
+    [[nodiscard]] Eigen::MatrixXd delassus() const
+    {
+        const auto m = static_cast<Eigen::Index>(m_active.size());
+        return m_delassus.topLeftCorner(m, m);
+    }
 
 private:
     void align(int numNodes, int addedAtBase);
+    void reserve(int numNodes);
     void buildCompliance(const scope::DiscreteRod& rod);
     void solveNormalForces();
 
@@ -95,12 +97,20 @@ private:
     std::vector<Eigen::Vector3d> m_normal;  ///< normal of the strongest contact, per node
     std::vector<int> m_triangle;            ///< last contact triangle per node (-1: none)
     std::vector<int> m_active;              ///< nodes in the update
-    Eigen::MatrixXd m_delassus;             ///< G over m_active, m/N
-    Eigen::VectorXd m_raw;                  ///< k_c d along n_a over m_active (signed), N
-    Eigen::VectorXd m_previous;             ///< lambda of the last step along n_a, N
-    Eigen::VectorXd m_lambda;               ///< this step's normal forces, N
-    std::vector<double> m_compliance;       ///< G_aa per node, m/N
-    std::vector<double> m_deflection;       ///< (G lambda)_a per node, m
+    // Working storage sized once to the longest inserted scope (reserve());
+    // only the leading m = m_active.size() entries are in use each step.
+    Eigen::MatrixXd m_delassus;  ///< G over m_active, m/N
+    Eigen::VectorXd m_raw;       ///< k_c d along n_a over m_active (signed), N
+    Eigen::VectorXd m_previous;  ///< lambda of the last step along n_a, N
+    Eigen::VectorXd m_lambda;    ///< this step's normal forces, N
+    Eigen::MatrixXd m_system;    ///< I + k_c G over the free nodes
+    Eigen::VectorXd m_fixedDelta, m_coupling, m_rhs;
+    std::vector<char> m_free;
+    std::vector<Eigen::Index> m_freeIndex;
+    std::vector<Eigen::Vector3d> m_rawNormal, m_rawFriction;  ///< per node, N
+    std::vector<double> m_strongest;                          ///< per node, N
+    std::vector<double> m_compliance;                         ///< G_aa per node, m/N
+    std::vector<double> m_deflection;                         ///< (G lambda)_a per node, m
     std::vector<contact::WallContactPoint> m_wallPoints;
     Eigen::Matrix3Xd m_loads;
     // Prefix sums over the joints (A = sum W, B = sum W X, C = sum X^T W X).

@@ -34,7 +34,7 @@ struct OperatorStyle {
     double withdrawSpeed;  ///< m/s after the cecum
     double forceLimit;     ///< N of handle force that makes it back off
     bool reducesLoops;     ///< withdraws with clockwise torque when a loop forms
-    double steeringGain;   ///< dial rad per rad of lumen offset per second
+    double steeringGain;   ///< 1/s: rate at which the dials follow the lumen's angular offset
 };
 
 [[nodiscard]] OperatorStyle expertStyle();

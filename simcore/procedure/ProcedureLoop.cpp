@@ -61,7 +61,8 @@ void ProcedureLoop::applyContact()
     // Nodes are counted from the base; when a node has just passed the anus
     // the previous shape has one node fewer: align the two from the tip.
     m_scopeVelocity.setZero(3, n);
-    Eigen::Matrix3Xd previous = m_scopeNow;
+    Eigen::Matrix3Xd& previous = m_scopeAligned;
+    previous = m_scopeNow;
     const Eigen::Index shift = n - m_scopePrevious.cols();
     for (Eigen::Index i = 0; i < n; ++i) {
         const Eigen::Index j = i - shift;

@@ -105,6 +105,7 @@ private:
     ProcedureFrame m_frame;
     ProcedureOutputs m_outputs;
     Eigen::Matrix3Xd m_scopeNow, m_scopePrevious, m_scopeVelocity;
+    Eigen::Matrix3Xd m_scopeAligned;  ///< the previous shape aligned from the tip (continuous detection)
     double m_time = 0.0;
     long m_steps = 0;
 };

@@ -127,8 +127,7 @@ void Colonoscope::addGravity(const Eigen::Vector3d& gravity)
 
 void Colonoscope::step()
 {
-    m_lastResidual =
-        solveChain(m_rod, static_cast<int>(m_parameters.solverIterations), m_parameters.solverRelaxation);
+    solveChain(m_rod, static_cast<int>(m_parameters.solverIterations), m_parameters.solverRelaxation);
 }
 
 TipPose Colonoscope::tipPose() const

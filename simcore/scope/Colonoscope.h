@@ -84,8 +84,6 @@ public:
     [[nodiscard]] std::span<const Eigen::Vector3d> nodePositions() const { return m_rod.position; }
     [[nodiscard]] TipPose tipPose() const;
     [[nodiscard]] HandleLoad handleLoad() const;
-    /// Largest joint increment of the last chain iteration of step(), rad (0 when converged).
-    [[nodiscard]] double lastResidual() const { return m_lastResidual; }
     [[nodiscard]] double upDownDial() const { return m_upDown; }
     [[nodiscard]] double leftRightDial() const { return m_leftRight; }
     [[nodiscard]] const ScopeParameters& parameters() const { return m_parameters; }
@@ -106,7 +104,6 @@ private:
     double m_shaftRotation = 0.0;
     double m_upDown = 0.0;
     double m_leftRight = 0.0;
-    double m_lastResidual = 0.0;
 };
 
 }  // namespace colonosim::scope
