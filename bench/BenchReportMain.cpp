@@ -1,5 +1,6 @@
 // bench_report [--quick] --out DIR: writes the speed-versus-error report
-// (speed_vs_error.csv, speed_vs_error.svg, summary.json) into DIR.
+// (speed_vs_error.csv, speed_vs_error.svg, scope_speed_vs_error.csv,
+// summary.json) into DIR.
 
 #include "bench/report/BenchReport.h"
 

@@ -3,7 +3,9 @@
 #include "bench/report/ActiveRegionStudy.h"
 #include "bench/report/BenchScene.h"
 #include "bench/report/BulletPeer.h"
+#include "bench/report/ProcedureRate.h"
 #include "bench/report/SceneRun.h"
+#include "bench/report/ScopeSweep.h"
 #include "bench/report/SpeedErrorSweep.h"
 #include "bench/report/SpeedVsErrorPlot.h"
 #include "bench/report/StepRate.h"
@@ -26,11 +28,15 @@ struct Scale {
     double activeDuration;  ///< s simulated per active-region run
     double rateSeconds;     ///< CPU s per step-rate timing
     int mappingRepeats;
-    int bisectionHalvings;  ///< on Bullet's kLST
+    int bisectionHalvings;   ///< on Bullet's kLST
+    TimingScale scopeStep;   ///< scope_step_us
+    TimingScale scopeSweep;  ///< each row of the scope sweep
+    int procedureWarmup;     ///< expert steps before the procedure timing
+    int procedureTimed;      ///< timed procedure steps
 };
 
-constexpr Scale kFull{0.2, 1.0, 1.0, 200, 14};
-constexpr Scale kQuick{0.01, 0.1, 0.2, 30, 8};
+constexpr Scale kFull{0.2, 1.0, 1.0, 200, 14, {0.02, 51}, {0.01, 21}, 3500, 2000};
+constexpr Scale kQuick{0.01, 0.1, 0.2, 30, 8, {0.002, 11}, {0.001, 5}, 200, 100};
 
 struct PeerResult {
     BulletMatch match;
@@ -81,6 +87,24 @@ nlohmann::json number(double value)
     return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
 }
 
+nlohmann::json scopeSweepJson(const std::vector<ScopeSweepRow>& rows)
+{
+    nlohmann::json out = nlohmann::json::array();
+    for (const ScopeSweepRow& row : rows) {
+        out.push_back({{"nodes", row.nodes},
+                       {"inserted_nodes", row.insertedNodes},
+                       {"iterations", row.iterations},
+                       {"step_us", row.stepSeconds * 1e6},
+                       {"tip_error_m", number(row.tipError)},
+                       {"max_node_error_m", number(row.maxNodeError)},
+                       {"tip_iteration_error_m", number(row.iterationTipError)},
+                       {"fixed_point_tip_error_m", number(row.fixedPointTipError)},
+                       {"discretisation_tip_error_m", number(row.discretisationTipError)},
+                       {"total_tip_error_m", number(row.totalTipError)}});
+    }
+    return out;
+}
+
 }  // namespace
 
 int runBenchReport(const BenchReportOptions& options, std::ostream& log)
@@ -123,6 +147,22 @@ int runBenchReport(const BenchReportOptions& options, std::ostream& log)
     summary["mapping_54k_ms"] = 1e3 * measureMappingSeconds(scene, scale.mappingRepeats);
     log << "mapping: " << summary["mapping_54k_ms"].get<double>() << " ms (median)\n";
 
+    const scope::ScopeParameters paperScope;  // 80 nodes, 50 iterations
+    summary["scope_step_us"] = 1e6 * measureScopeStepSeconds(paperScope, ScopeLoad::Free, scale.scopeStep);
+    log << "scope step: " << summary["scope_step_us"].get<double>()
+        << " us (80 nodes, 50 iterations, median)\n";
+    const std::vector<ScopeSweepRow> scopeRows = runScopeSweep({.timing = scale.scopeSweep}, log);
+    summary["scope_speed_vs_error"] = scopeSweepJson(scopeRows);
+
+    const ProcedureRate procedure = measureProcedureStepRate(scale.procedureWarmup, scale.procedureTimed);
+    summary["procedure_step_hz"] = procedure.stepHz;
+    summary["procedure_step"] = {{"substeps", procedure.substeps},
+                                 {"warmup_steps", procedure.warmupSteps},
+                                 {"timed_steps", procedure.timedSteps},
+                                 {"operator", "expert"}};
+    log << "procedure step: " << procedure.stepHz << " steps/s, " << procedure.substeps << " substeps (after "
+        << procedure.warmupSteps << " expert steps)\n";
+
     const ReferenceSolution reference = computeReference(scene, scale.sceneDuration, log);
     summary["reference_self_error_m"] = number(reference.selfError);
     summary["reference_self_error_max_m"] = number(reference.selfErrorMax);
@@ -152,6 +192,8 @@ int runBenchReport(const BenchReportOptions& options, std::ostream& log)
 
     std::ofstream csv(options.outDir / "speed_vs_error.csv");
     writeSweepCsv(rows, csv);
+    std::ofstream scopeCsv(options.outDir / "scope_speed_vs_error.csv");
+    writeScopeSweepCsv(scopeRows, scopeCsv);
     std::ofstream svg(options.outDir / "speed_vs_error.svg");
     writeSpeedVsErrorSvg(rows, PeerPoint{"bullet_btSoftBody", peer.cpuPerSimulatedSecond, peer.error.rms},
                          "Colon, " +
@@ -161,12 +203,13 @@ int runBenchReport(const BenchReportOptions& options, std::ostream& log)
     summary["report_cpu_s"] = processCpuSeconds() - start;
     std::ofstream json(options.outDir / "summary.json");
     json << summary.dump(2) << "\n";
-    if (!csv || !svg || !json) {
+    if (!csv || !scopeCsv || !svg || !json) {
         log << "bench report: writing into " << options.outDir << " failed\n";
         return 1;
     }
-    log << "bench report: wrote speed_vs_error.csv, speed_vs_error.svg, summary.json into " << options.outDir
-        << " (" << summary["report_cpu_s"].get<double>() << " s CPU)\n";
+    log << "bench report: wrote speed_vs_error.csv, speed_vs_error.svg, scope_speed_vs_error.csv, "
+           "summary.json into "
+        << options.outDir << " (" << summary["report_cpu_s"].get<double>() << " s CPU)\n";
     return 0;
 }
 
