@@ -12,6 +12,7 @@ cd "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")"
 # zlib1g-dev: assimp's CMake targets link /usr/lib/x86_64-linux-gnu/libz.so, but libassimp-dev
 # does not depend on the package that ships it.
 # libxml2-utils: xmllint, with which the tests validate generated case files against their XSD.
+# libopenigtlink-dev: the OpenIGTLink protocol between the Haptic Device Controller and the simulator.
 PACKAGES=(
     build-essential cmake ninja-build pkg-config git
     libeigen3-dev libbullet-dev libsqlite3-dev
@@ -20,6 +21,7 @@ PACKAGES=(
     libgtest-dev libgmock-dev libbenchmark-dev
     libsodium-dev libzstd-dev
     xvfb xauth poppler-utils libxml2-utils
+    libopenigtlink-dev
 )
 
 BUILD_DIR=build

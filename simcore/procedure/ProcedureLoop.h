@@ -74,6 +74,12 @@ public:
     /// One loop step; never throws.
     const ProcedureOutputs& step(const InputSample& input);
 
+    /// Records that input device `name` connected (or disconnected) now.
+    void noteDevice(const std::string& name, bool connected)
+    {
+        m_recorder.note(m_time, connected ? EventKind::DeviceConnected : EventKind::DeviceDisconnected, name);
+    }
+
     [[nodiscard]] double time() const { return m_time; }
     [[nodiscard]] const ProcedureOutputs& outputs() const { return m_outputs; }
     [[nodiscard]] const ProcedureFrame& lastFrame() const { return m_frame; }

@@ -21,6 +21,8 @@ std::string_view eventName(EventKind kind)
     case EventKind::LesionMarked: return "lesion_marked";
     case EventKind::Retroflexion: return "retroflexion";
     case EventKind::InputRejected: return "input_rejected";
+    case EventKind::DeviceConnected: return "device_connected";
+    case EventKind::DeviceDisconnected: return "device_disconnected";
     }
     return "unknown";
 }

@@ -9,7 +9,8 @@
 /// frame: cecum reached, loop formed / resolved (with its type), excessive
 /// handle force start / end, perforation, red-out start / end (lens against
 /// the wall), lens wash and lesion marked (button presses), retroflexion
-/// (tip pointing back along the colon), and device input rejected.
+/// (tip pointing back along the colon), device input rejected, and input
+/// device connected / disconnected (with its name: which device drove the session).
 ///
 /// The canonical text form writes every double as a hexadecimal float, so
 /// two recordings are bit-identical exactly when their texts are equal.
@@ -69,6 +70,8 @@ enum class EventKind {
     LesionMarked,
     Retroflexion,
     InputRejected,
+    DeviceConnected,     ///< detail: the input device's name
+    DeviceDisconnected,  ///< detail: the input device's name
 };
 [[nodiscard]] std::string_view eventName(EventKind kind);
 
@@ -123,6 +126,8 @@ public:
 
     /// Called once per loop step, in order.
     void record(const ProcedureFrame& frame);
+    /// An event that does not come from the frame (an input device came or went).
+    void note(double time, EventKind kind, std::string detail) { event(time, kind, std::move(detail)); }
     [[nodiscard]] const Recording& recording() const { return m_recording; }
 
 private:

@@ -1,0 +1,115 @@
+#include "simcore/devices/HdcServer.h"
+
+#include <cstdio>
+
+namespace colonosim::devices {
+
+HdcServer::HdcServer(int port, const HapticParameters& parameters, bool anyInterface)
+    : m_parameters(parameters), m_listener(port, !anyInterface)
+{
+    m_parameters.validate();
+    m_thread = std::jthread([this](std::stop_token stop) { serve(stop); });
+}
+
+HdcServer::~HdcServer()
+{
+    m_thread.request_stop();
+    if (m_thread.joinable()) {
+        m_thread.join();
+    }
+}
+
+std::optional<StampedInput> HdcServer::latestInput()
+{
+    StampedInput in;
+    if (m_inputs.read(in)) {
+        return in;
+    }
+    return std::nullopt;
+}
+
+void HdcServer::publishLoad(const HandleCommand& load, double inputTime)
+{
+    m_loads.write(StampedLoad{load, inputTime, ++m_loadSequence});
+}
+
+void HdcServer::serve(std::stop_token stop)
+{
+    const auto maxBody = static_cast<std::size_t>(m_parameters.maxMessageBytes);
+    TcpLink link;
+    MessageReader reader(maxBody);
+    Bytes incoming;
+    StampedInput frame;
+    long lastSent = 0;
+    while (!stop.stop_requested()) {
+        if (!link.open()) {
+            m_connected = false;
+            link = m_listener.accept(0.002);
+            if (link.open()) {
+                reader = MessageReader(maxBody);
+                std::snprintf(frame.device, sizeof frame.device, "%s", "unknown");
+                m_connected = true;
+                ++m_connections;
+            }
+            continue;
+        }
+        // One HDC at a time: anyone else is told why and closed.
+        if (TcpLink other = m_listener.accept(0.0); other.open()) {
+            other.send(encodeStatus(kSimulatorStatusName, kStatusBusy, "busy: another HDC is connected"),
+                       0.01);
+            other.close();
+            ++m_refusedConnections;
+        }
+        incoming.clear();
+        const bool alive = link.receive(incoming, 0.0002);
+        reader.feed(incoming.data(), incoming.size());
+        std::string error;
+        for (;;) {
+            const std::optional<Message> m = reader.next(error);
+            if (!m) {
+                if (!error.empty()) {
+                    ++m_refusedMessages;
+                    if (reader.fatal()) {
+                        link.close();
+                        break;
+                    }
+                    continue;
+                }
+                break;
+            }
+            switch (m->kind) {
+            case Message::Kind::Pose: frame.input.insertion = m->insertion; break;
+            case Message::Kind::Angles:
+                frame.input.rotation = m->values[0];
+                frame.input.dialUpDown = m->values[1];
+                frame.input.dialLeftRight = m->values[2];
+                break;
+            case Message::Kind::Buttons:  // the last message of a frame
+                frame.input.buttons = m->buttons;
+                frame.time = m->time;
+                ++frame.frame;
+                m_inputs.write(frame);
+                break;
+            case Message::Kind::Status:
+                m_emergencyStop = m->statusCode == kStatusDisabled;
+                if (m->statusCode == kStatusOk && !m->statusText.empty()) {
+                    std::snprintf(frame.device, sizeof frame.device, "%s", m->statusText.c_str());
+                }
+                break;
+            case Message::Kind::HandleLoad:
+                ++m_refusedMessages;  // not ours to receive
+                break;
+            }
+        }
+        StampedLoad load;
+        if (m_loads.read(load) && load.sequence != lastSent && link.open()) {
+            lastSent = load.sequence;
+            link.send(encodeHandleLoad(load.load, load.inputTime), 0.001);
+        }
+        if (!alive) {
+            link.close();
+        }
+    }
+}
+
+}  // namespace colonosim::devices

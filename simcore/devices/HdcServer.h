@@ -1,0 +1,71 @@
+#pragma once
+/// \file
+/// The simulator's side of the HDC link, on its own device I/O thread (a
+/// std::jthread). It accepts one HDC at a time and refuses any other with a
+/// STATUS "busy" message before closing it; it survives the HDC leaving and
+/// coming back. Input frames reach the procedure loop through a triple
+/// buffer (latestInput(), never waits); handle loads go back the same way
+/// (publishLoad()). The procedure thread never touches a socket.
+
+#include "simcore/devices/HapticParameters.h"
+#include "simcore/devices/IgtlMessages.h"
+#include "simcore/devices/TcpLink.h"
+#include "simcore/devices/TripleBuffer.h"
+
+#include <atomic>
+#include <optional>
+#include <string>
+#include <thread>
+
+namespace colonosim::devices {
+
+struct StampedInput {
+    procedure::InputSample input;
+    double time = 0.0;            ///< the HDC's time of the frame, s
+    long frame = 0;               ///< frames received so far
+    char device[32] = "unknown";  ///< the device's name, from its STATUS on connecting
+};
+
+struct StampedLoad {
+    HandleCommand load;
+    double inputTime = 0.0;  ///< time of the input frame the load was computed from, s
+    long sequence = 0;
+};
+
+class HdcServer {
+public:
+    /// Listens on `port` (0: any free port) on the loopback unless `anyInterface`.
+    HdcServer(int port, const HapticParameters& parameters, bool anyInterface = false);
+    ~HdcServer();
+    HdcServer(const HdcServer&) = delete;
+    HdcServer& operator=(const HdcServer&) = delete;
+
+    [[nodiscard]] int port() const { return m_listener.port(); }
+    /// The newest complete input frame since the last call, if any.
+    std::optional<StampedInput> latestInput();
+    /// Sends the handle load computed from the input frame of time `inputTime`.
+    void publishLoad(const HandleCommand& load, double inputTime);
+
+    [[nodiscard]] bool connected() const { return m_connected.load(); }
+    [[nodiscard]] int connections() const { return m_connections.load(); }
+    [[nodiscard]] int refusedConnections() const { return m_refusedConnections.load(); }
+    [[nodiscard]] int refusedMessages() const { return m_refusedMessages.load(); }
+    [[nodiscard]] bool emergencyStop() const { return m_emergencyStop.load(); }
+
+private:
+    void serve(std::stop_token stop);
+
+    HapticParameters m_parameters;
+    TcpListener m_listener;
+    TripleBuffer<StampedInput> m_inputs;
+    TripleBuffer<StampedLoad> m_loads;
+    long m_loadSequence = 0;
+    std::atomic<bool> m_connected{false};
+    std::atomic<bool> m_emergencyStop{false};
+    std::atomic<int> m_connections{0};
+    std::atomic<int> m_refusedConnections{0};
+    std::atomic<int> m_refusedMessages{0};
+    std::jthread m_thread;
+};
+
+}  // namespace colonosim::devices
