@@ -13,6 +13,7 @@ cd "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")"
 # does not depend on the package that ships it.
 # libxml2-utils: xmllint, with which the tests validate generated case files against their XSD.
 # libopenigtlink-dev: the OpenIGTLink protocol between the Haptic Device Controller and the simulator.
+# libsdl2-dev: gamepads, through SDL2's game-controller API.
 PACKAGES=(
     build-essential cmake ninja-build pkg-config git
     libeigen3-dev libbullet-dev libsqlite3-dev
@@ -21,7 +22,7 @@ PACKAGES=(
     libgtest-dev libgmock-dev libbenchmark-dev
     libsodium-dev libzstd-dev
     xvfb xauth poppler-utils libxml2-utils
-    libopenigtlink-dev
+    libopenigtlink-dev libsdl2-dev
 )
 
 BUILD_DIR=build

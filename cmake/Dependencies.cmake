@@ -22,3 +22,16 @@ endif()
 
 # zstd: compression of the recorded input traces. No CMake package in Debian 12.
 pkg_check_modules(ZSTD REQUIRED IMPORTED_TARGET libzstd)
+
+# OpenIGTLink: the protocol between the Haptic Device Controller and the
+# simulator. Debian's CONFIG package sets variables only; wrap them in a target.
+find_package(OpenIGTLink REQUIRED NO_MODULE)
+if(NOT TARGET colonosim::openigtlink)
+  add_library(colonosim::openigtlink INTERFACE IMPORTED)
+  target_include_directories(colonosim::openigtlink SYSTEM INTERFACE ${OpenIGTLink_INCLUDE_DIRS})
+  target_link_directories(colonosim::openigtlink INTERFACE ${OpenIGTLink_LIBRARY_DIRS})
+  target_link_libraries(colonosim::openigtlink INTERFACE ${OpenIGTLink_LIBRARIES})
+endif()
+
+# SDL2: gamepads through its game-controller API.
+pkg_check_modules(SDL2 REQUIRED IMPORTED_TARGET sdl2)

@@ -3,6 +3,7 @@
 /// the headless demonstration); with a subcommand, a headless tool.
 /// Exit status: 0 success, 1 failure of the run itself, 2 bad input.
 
+#include "simcore/devices/Gamepad.h"
 #include "simcore/geometry/MeshImport.h"
 #include "simcore/params/Parameter.h"
 #include "trainer_ui/cli/CommandLine.h"
@@ -16,18 +17,19 @@
 namespace {
 void printUsage()
 {
-    std::cout
-        << "usage: colonosim [SUBCOMMAND] [OPTIONS]\n"
-           "With no subcommand: the headless demonstration (the trainer arrives later).\n"
-           "Subcommands (each has --help):\n"
-           "  demo        headless demonstration of the colon simulation\n"
-           "  params      declared physical parameters with units, ranges and sources\n"
-           "  mesh        import and check a patient-specific colon surface\n"
-           "  bench       speed-versus-error report: bench [--quick] --out DIR\n"
-           "  rod         cantilever equilibrium of the colonoscope's rod model, as JSON\n"
-           "  run         one procedure: run --default --operator expert|novice|replay:TRACE --out DIR\n"
-           "  case        patient cases: case generate|validate|stats (randomized from population "
-           "statistics)\n";
+    std::cout << "usage: colonosim [SUBCOMMAND] [OPTIONS]\n"
+                 "With no subcommand: the headless demonstration (the trainer arrives later).\n"
+                 "Subcommands (each has --help):\n"
+                 "  demo        headless demonstration of the colon simulation\n"
+                 "  params      declared physical parameters with units, ranges and sources\n"
+                 "  mesh        import and check a patient-specific colon surface\n"
+                 "  bench       speed-versus-error report: bench [--quick] --out DIR\n"
+                 "  rod         cantilever equilibrium of the colonoscope's rod model, as JSON\n"
+                 "  run         one procedure: run --default --operator "
+                 "expert|novice|replay:TRACE|hdc:PORT|gamepad\n"
+                 "              --out DIR\n"
+                 "  case        patient cases: case generate|validate|stats (randomized from population "
+                 "statistics)\n";
 }
 }  // namespace
 
@@ -66,6 +68,9 @@ int main(int argc, char** argv)
         std::cerr << "colonosim: unknown subcommand \"" << command << "\" (see colonosim --help)\n";
         return 2;
     } catch (const cli::UsageError& error) {
+        std::cerr << "colonosim " << command << ": " << error.what() << '\n';
+        return 2;
+    } catch (const devices::DeviceError& error) {
         std::cerr << "colonosim " << command << ": " << error.what() << '\n';
         return 2;
     } catch (const params::ParameterError& error) {

@@ -50,7 +50,7 @@ void HdcController::tick(double now)
     }
     m_lastTick = now;
     ++m_stats.ticks;
-    if (m_device.emergencyStopPressed()) {
+    if (m_device.emergencyStopPressed() || m_emergencyRequest.load()) {
         m_servo.emergencyStop();
     }
     connectIfDue(now);
@@ -113,6 +113,10 @@ void HdcController::run(std::stop_token stop, double duration)
         }
         tick(now);
         next += std::chrono::duration_cast<Clock::duration>(period);
+        const auto late = Clock::now();
+        if (late > next) {
+            next = late;  // overran: start a fresh schedule rather than catch up with back-to-back ticks
+        }
         std::this_thread::sleep_until(next);
     }
     m_link.close();

@@ -12,6 +12,7 @@
 #include "simcore/devices/IgtlMessages.h"
 #include "simcore/devices/TcpLink.h"
 
+#include <atomic>
 #include <memory>
 #include <stop_token>
 #include <string>
@@ -45,6 +46,8 @@ public:
     [[nodiscard]] const std::string& lastRefusal() const { return m_lastRefusal; }
     /// Drops the link (as a cable pulled would).
     void disconnect();
+    /// From any thread: the next tick latches an emergency stop.
+    void requestEmergencyStop() { m_emergencyRequest = true; }
 
 private:
     void connectIfDue(double now);
@@ -59,6 +62,7 @@ private:
     double m_nextConnect = 0.0;
     double m_lastTick = -1.0;
     bool m_stopReported = false;
+    std::atomic<bool> m_emergencyRequest{false};
     std::string m_lastRefusal;
     ServoStatistics m_stats;
 };

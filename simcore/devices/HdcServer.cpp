@@ -2,12 +2,16 @@
 
 #include <cstdio>
 
+#include <sys/eventfd.h>
+#include <unistd.h>
+
 namespace colonosim::devices {
 
 HdcServer::HdcServer(int port, const HapticParameters& parameters, bool anyInterface)
     : m_parameters(parameters), m_listener(port, !anyInterface)
 {
     m_parameters.validate();
+    m_wake = ::eventfd(0, EFD_NONBLOCK | EFD_CLOEXEC);
     m_thread = std::jthread([this](std::stop_token stop) { serve(stop); });
 }
 
@@ -16,6 +20,9 @@ HdcServer::~HdcServer()
     m_thread.request_stop();
     if (m_thread.joinable()) {
         m_thread.join();
+    }
+    if (m_wake >= 0) {
+        ::close(m_wake);
     }
 }
 
@@ -31,6 +38,8 @@ std::optional<StampedInput> HdcServer::latestInput()
 void HdcServer::publishLoad(const HandleCommand& load, double inputTime)
 {
     m_loads.write(StampedLoad{load, inputTime, ++m_loadSequence});
+    const std::uint64_t one = 1;
+    [[maybe_unused]] const ssize_t n = ::write(m_wake, &one, sizeof one);  // never blocks (EFD_NONBLOCK)
 }
 
 void HdcServer::serve(std::stop_token stop)
@@ -61,7 +70,10 @@ void HdcServer::serve(std::stop_token stop)
             ++m_refusedConnections;
         }
         incoming.clear();
-        const bool alive = link.receive(incoming, 0.0002);
+        // Sleeps until the HDC sends or the simulator publishes a load (or 2 ms pass).
+        const bool alive = link.receive(incoming, 0.002, m_wake);
+        std::uint64_t drained = 0;
+        [[maybe_unused]] const ssize_t n = ::read(m_wake, &drained, sizeof drained);
         reader.feed(incoming.data(), incoming.size());
         std::string error;
         for (;;) {

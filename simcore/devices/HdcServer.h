@@ -65,6 +65,7 @@ private:
     std::atomic<int> m_connections{0};
     std::atomic<int> m_refusedConnections{0};
     std::atomic<int> m_refusedMessages{0};
+    int m_wake = -1;  ///< eventfd: publishLoad() wakes the I/O thread at once
     std::jthread m_thread;
 };
 

@@ -110,13 +110,13 @@ bool TcpLink::send(const std::vector<std::uint8_t>& bytes, double timeout)
     return m_fd >= 0;
 }
 
-bool TcpLink::receive(std::vector<std::uint8_t>& out, double timeout)
+bool TcpLink::receive(std::vector<std::uint8_t>& out, double timeout, int wakeFd)
 {
     if (m_fd < 0) {
         return false;
     }
-    pollfd p{m_fd, POLLIN, 0};
-    if (::poll(&p, 1, milliseconds(timeout)) <= 0) {
+    pollfd p[2] = {{m_fd, POLLIN, 0}, {wakeFd, POLLIN, 0}};
+    if (::poll(p, wakeFd >= 0 ? 2 : 1, milliseconds(timeout)) <= 0 || p[0].revents == 0) {
         return true;
     }
     std::uint8_t buffer[4096];

@@ -28,7 +28,8 @@ public:
     /// Sends all of it (waits at most `timeout` s for the socket); false closes the link.
     bool send(const std::vector<std::uint8_t>& bytes, double timeout = 0.1);
     /// Appends what has arrived within `timeout` s to `out`; false when the peer closed.
-    bool receive(std::vector<std::uint8_t>& out, double timeout);
+    /// A readable `wakeFd` (e.g. an eventfd) ends the wait early.
+    bool receive(std::vector<std::uint8_t>& out, double timeout, int wakeFd = -1);
     void close();
 
 private:

@@ -14,10 +14,10 @@ struct Result {
     std::string output;  ///< stdout, and stderr unless stdoutOnly
 };
 
-inline Result runColonosim(const std::string& arguments, bool stdoutOnly = false)
+/// Runs `executable` with `arguments` through the shell.
+inline Result runCommand(const std::string& executable, const std::string& arguments, bool stdoutOnly = false)
 {
-    const std::string command =
-        std::string(COLONOSIM_EXECUTABLE) + " " + arguments + (stdoutOnly ? " 2>/dev/null" : " 2>&1");
+    const std::string command = executable + " " + arguments + (stdoutOnly ? " 2>/dev/null" : " 2>&1");
     Result result;
     FILE* pipe = popen(command.c_str(), "r");
     std::array<char, 4096> buffer{};
@@ -27,6 +27,11 @@ inline Result runColonosim(const std::string& arguments, bool stdoutOnly = false
     const int raw = pipe != nullptr ? pclose(pipe) : -1;
     result.status = raw >= 0 && WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
     return result;
+}
+
+inline Result runColonosim(const std::string& arguments, bool stdoutOnly = false)
+{
+    return runCommand(COLONOSIM_EXECUTABLE, arguments, stdoutOnly);
 }
 
 }  // namespace colonosim::testing

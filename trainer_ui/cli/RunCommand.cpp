@@ -1,12 +1,15 @@
 /// \file
-/// `colonosim run --default|--case FILE --operator expert|novice|replay:TRACE --out DIR [--json] [--max-time
-/// S]`: one procedure on the default colon, driven by a scripted operator or by a recorded input trace.
+/// `colonosim run --default|--case FILE --operator expert|novice|replay:TRACE|hdc:PORT|gamepad --out DIR
+/// [--json] [--max-time S]`: one procedure on the default colon, driven by a scripted operator, a recorded
+/// input trace, a Haptic Device Controller (colonosim-hdc) connecting over OpenIGTLink on PORT, or a gamepad.
 /// Writes DIR/session.trace (the input trace), DIR/samples.csv, DIR/events.csv and DIR/recording.txt (the
 /// canonical recording: two runs are bit-identical when these files are equal), and prints a summary: time to
 /// cecum, loops by type, peak handle force, peak discomfort.
 
 #include "case_generator/CaseReader.h"
 #include "case_generator/SceneSpec.h"
+#include "simcore/devices/Gamepad.h"
+#include "simcore/devices/HdcOperator.h"
 #include "simcore/geometry/ProceduralColon.h"
 #include "simcore/procedure/Operator.h"
 #include "trainer_ui/cli/CommandLine.h"
@@ -14,6 +17,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -62,11 +66,16 @@ int runProcedure(std::span<char* const> args)
                            {"--case", "--operator", "--out", "--max-time"});
     if (line.has("--help")) {
         std::cout
-            << "usage: colonosim run --default|--case FILE --operator expert|novice|replay:TRACE --out DIR\n"
-               "                     [--json] [--max-time S]\n"
+            << "usage: colonosim run --default|--case FILE --operator "
+               "expert|novice|replay:TRACE|hdc:PORT|gamepad\n"
+               "                     --out DIR [--json] [--max-time S]\n"
                "One procedure at 1 kHz; writes session.trace, samples.csv, events.csv, recording.txt to "
                "DIR.\n"
-               "  --max-time S   stop after S simulated seconds, 1-3600 (default 900)\n";
+               "  --max-time S   stop after S simulated seconds, 1-3600 (default 900)\n"
+               "  hdc:PORT       wait on PORT (1024-65535, loopback) for colonosim-hdc; the session runs\n"
+               "                 whether or not a device is connected, holding the last input\n"
+               "  gamepad        the first game controller SDL finds (left stick: insert and twist;\n"
+               "                 right stick: dials; A air, B water, X suction, Y mark lesion)\n";
         return 0;
     }
     const std::optional<std::string> caseFile = line.value("--case");
@@ -79,7 +88,24 @@ int runProcedure(std::span<char* const> args)
         throw UsageError("--operator and --out are required (see --help)");
     }
     const double maxTime = line.number("--max-time", 900.0, 1.0, 3600.0, "s");
-    std::unique_ptr<procedure::Operator> driver = procedure::makeOperator(*operatorName);
+    std::unique_ptr<procedure::Operator> driver;
+    devices::HdcOperator* hdc = nullptr;
+    if (operatorName->starts_with("hdc:")) {
+        const std::string port = operatorName->substr(4);
+        char* end = nullptr;
+        const long value = std::strtol(port.c_str(), &end, 10);
+        if (port.empty() || *end != '\0' || value < 1024 || value > 65535) {
+            throw UsageError("--operator hdc:PORT: port = \"" + port + "\" is outside [1024, 65535]");
+        }
+        auto made =
+            std::make_unique<devices::HdcOperator>(static_cast<int>(value), devices::HapticParameters{});
+        hdc = made.get();
+        driver = std::move(made);
+    } else if (*operatorName == "gamepad") {
+        driver = std::make_unique<devices::GamepadOperator>(0);
+    } else {
+        driver = procedure::makeOperator(*operatorName);
+    }
     std::filesystem::create_directories(*out);
 
     // A generated case sets the anatomy, the wall and the environment; its
@@ -104,6 +130,9 @@ int runProcedure(std::span<char* const> args)
     procedure::ProcedureLoop loop(anatomy, settings);
     const auto steps = static_cast<long>(maxTime / loop.trace().loopStep);
     for (long s = 0; s < steps && !driver->finished(); ++s) {
+        if (hdc != nullptr) {
+            hdc->recordConnection(loop);
+        }
         loop.step(driver->next(loop));
     }
     const std::filesystem::path dir(*out);
