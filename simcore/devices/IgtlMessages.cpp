@@ -153,6 +153,31 @@ std::optional<Message> MessageReader::next(std::string& error)
             refuse("igtl." + name + ".timestamp is not finite");
             return std::nullopt;
         }
+        // The library trusts a body's layout (a STATUS string without its NUL
+        // is read past the body's end with strlen), so each body's layout is
+        // checked here before the library unpacks it.
+        constexpr std::size_t kTransformBody = 48;  // 12 float32
+        constexpr std::size_t kSensorHeader = 10;   // length, status, unit
+        constexpr std::size_t kStatusHeader = 30;   // code, subcode, error name
+        const auto layoutError = [&]() -> std::string {
+            if (type == "TRANSFORM" && body != kTransformBody) {
+                return "igtl." + name + ": TRANSFORM body of " + std::to_string(body) + " B, not 48 B";
+            }
+            if (type == "SENSOR" && (body < kSensorHeader ||
+                                     body != kSensorHeader + 8 * static_cast<std::size_t>(bodyBytes[0]))) {
+                return "igtl." + name + ": SENSOR body of " + std::to_string(body) +
+                       " B does not match its length";
+            }
+            if (type == "STATUS" && (body <= kStatusHeader || bodyBytes[body - 1] != 0)) {
+                return "igtl." + name + ": STATUS body of " + std::to_string(body) +
+                       " B without a NUL-terminated status string";
+            }
+            return {};
+        };
+        if (const std::string why = layoutError(); !why.empty()) {
+            refuse(why);
+            return std::nullopt;
+        }
         if (type == "TRANSFORM" && name == kPoseName) {
             igtl::TransformMessage::Pointer m = igtl::TransformMessage::New();
             if (!unpack(m)) {

@@ -237,3 +237,33 @@ TEST(HapticLink, ALostConnectionBringsTheForceToZeroWithinFiveMilliseconds)
 }
 
 }  // namespace
+
+namespace {
+
+// Found by fuzzing: the library reads a STATUS string with strlen, past the
+// body when the string has no NUL. Such a body is refused before unpacking.
+TEST(HapticLink, AStatusStringWithoutItsNulIsRefused)
+{
+    Bytes status = encodeStatus(kDeviceStatusName, kStatusOk, "simulated");
+    ASSERT_EQ(status.back(), 0);
+    status.back() = 'x';
+    MessageReader reader(4096);
+    reader.feed(status.data(), status.size());
+    std::string error;
+    EXPECT_FALSE(reader.next(error).has_value());
+    EXPECT_NE(error.find("NUL"), std::string::npos) << error;
+    EXPECT_FALSE(reader.fatal());
+}
+
+TEST(HapticLink, ASensorWhoseLengthDisagreesWithItsBodyIsRefused)
+{
+    Bytes load = encodeHandleLoad(HandleCommand{1.0, 0.0}, 1.0);
+    load[58] = 9;  // claims 9 values in a body holding 2
+    MessageReader reader(4096);
+    reader.feed(load.data(), load.size());
+    std::string error;
+    EXPECT_FALSE(reader.next(error).has_value());
+    EXPECT_NE(error.find("does not match its length"), std::string::npos) << error;
+}
+
+}  // namespace
