@@ -22,3 +22,10 @@ endif()
 
 # zstd: compression of the recorded input traces. No CMake package in Debian 12.
 pkg_check_modules(ZSTD REQUIRED IMPORTED_TARGET libzstd)
+
+# Qt enters at db (QtCore, QtSql) and trainer_ui (QtGui for the PDF reports).
+find_package(Qt6 REQUIRED COMPONENTS Core Sql Gui)
+# SQLite itself: the online backup API (db); the same library the QSQLITE driver uses.
+pkg_check_modules(SQLITE3 REQUIRED IMPORTED_TARGET sqlite3)
+# libsodium: Argon2id password hashes (db) and Ed25519 report signatures (trainer_ui).
+pkg_check_modules(SODIUM REQUIRED IMPORTED_TARGET libsodium)
