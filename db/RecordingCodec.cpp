@@ -1,5 +1,7 @@
 #include "db/RecordingCodec.h"
 
+#include "db/ColumnCoding.h"
+
 #include <zstd.h>
 
 #include <bit>
@@ -9,7 +11,7 @@
 namespace colonosim::db {
 
 namespace {
-constexpr char kMagic[8] = {'C', 'S', 'R', 'E', 'C', '0', '0', '1'};
+constexpr char kMagic[8] = {'C', 'S', 'R', 'E', 'C', '0', '0', '2'};
 constexpr int kDoubleColumns = 10;
 constexpr int kZstdLevel = 3;  // zstd's default: fast enough for the 1 s store target
 
@@ -72,13 +74,12 @@ std::vector<char> encodeRecording(const procedure::Recording& recording)
     std::vector<char> raw;
     const size_t n = recording.samples.size();
     raw.reserve(n * (kDoubleColumns * 8 + 2) + recording.events.size() * 32);
+    std::vector<double> values(n);
     for (int c = 0; c < kDoubleColumns; ++c) {
-        std::uint64_t previous = 0;
-        for (const auto& s : recording.samples) {
-            const auto bits = std::bit_cast<std::uint64_t>(column(s, c));
-            put(raw, bits ^ previous);
-            previous = bits;
+        for (size_t k = 0; k < n; ++k) {
+            values[k] = column(recording.samples[k], c);
         }
+        appendColumn(raw, values);
     }
     for (const auto& s : recording.samples) {
         put(raw, static_cast<std::uint8_t>(s.segment));
@@ -111,7 +112,7 @@ std::vector<char> encodeRecording(const procedure::Recording& recording)
 procedure::Recording decodeRecording(const std::vector<char>& bytes)
 {
     if (bytes.size() < 32 || std::memcmp(bytes.data(), kMagic, 8) != 0) {
-        throw RecordingCodecError("recording: not a stored recording (magic \"CSREC001\" expected)");
+        throw RecordingCodecError("recording: not a stored recording (magic \"CSREC002\" expected)");
     }
     size_t at = 8;
     const auto n = take<std::uint64_t>(bytes, at, "sample count");
@@ -136,10 +137,9 @@ procedure::Recording decodeRecording(const std::vector<char>& bytes)
     recording.samples.resize(n);
     size_t r = 0;
     for (int c = 0; c < kDoubleColumns; ++c) {
-        std::uint64_t previous = 0;
-        for (auto& s : recording.samples) {
-            previous ^= take<std::uint64_t>(raw, r, "samples");
-            setColumn(s, c, std::bit_cast<double>(previous));
+        const std::vector<double> values = takeColumn(raw, r, n);
+        for (size_t k = 0; k < n; ++k) {
+            setColumn(recording.samples[k], c, values[k]);
         }
     }
     for (auto& s : recording.samples) {

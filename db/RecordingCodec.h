@@ -3,13 +3,12 @@
 /// The stored form of a procedure Recording (the `recording` BLOB of a
 /// session), lossless so that metrics can be recomputed bit for bit.
 ///
-/// Layout (little-endian): magic "CSREC001", uint64 sample count, uint64
-/// event count, uint64 compressed size, then one zstd frame holding the
-/// sample columns one after the other (time, insertion, tip x/y/z, handle
-/// force, handle torque, max wall force, mesentery strain, discomfort as the
-/// IEEE-754 bit patterns XOR-ed with the previous sample's; then segment and
-/// loop bytes), then the events (time bits, kind byte, detail length uint32
-/// and bytes). XOR of bit patterns is exactly invertible.
+/// Layout (little-endian): magic "CSREC002", uint64 sample count, uint64
+/// event count, uint64 compressed size, then one zstd frame (level 3) holding
+/// the sample columns one after the other (time, insertion, tip x/y/z, handle
+/// force, handle torque, max wall force, mesentery strain, discomfort, each
+/// coded by ColumnCoding.h; then segment and loop bytes), then the events
+/// (time bits, kind byte, detail length uint32 and bytes).
 
 #include "simcore/procedure/Recorder.h"
 

@@ -12,6 +12,7 @@
 #include "case_generator/SceneSpec.h"
 #include "curricula/Curriculum.h"
 #include "db/RecordingCodec.h"
+#include "db/StoredTrace.h"
 #include "scoring/SessionMetrics.h"
 #include "simcore/geometry/ProceduralColon.h"
 #include "simcore/procedure/Operator.h"
@@ -184,7 +185,7 @@ int runProcedure(std::span<char* const> args)
         context.colonLength = settings.recorder.colonLength;
         context.lesionsPresent = lesionsPresent;
         db::SessionResult result;
-        result.trace = bytes(procedure::encodeTrace(loop.trace()));
+        result.trace = bytes(db::encodeStoredTrace(loop.trace()));
         result.recording = bytes(db::encodeRecording(loop.recording()));
         result.duration = loop.time();
         for (const auto& e : loop.recording().events) {
