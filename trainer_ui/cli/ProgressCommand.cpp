@@ -61,12 +61,13 @@ nlohmann::json progressReport(db::Records& records, const db::Actor& actor, cons
                              {"competent_at", curve.competentAt},
                              {"unacceptable_at", curve.unacceptableAt}};
     for (const curricula::RuleStatus& r : curricula::evaluate(*rules.value, metrics)) {
-        out["certification"].push_back({{"rule", r.rule->id},
-                                        {"description", r.rule->description},
-                                        {"met", r.met},
-                                        {"observed", std::isnan(r.observed) ? nlohmann::json() : nlohmann::json(r.observed)},
-                                        {"sessions", r.sessions},
-                                        {"source", r.rule->source}});
+        out["certification"].push_back(
+            {{"rule", r.rule->id},
+             {"description", r.rule->description},
+             {"met", r.met},
+             {"observed", std::isnan(r.observed) ? nlohmann::json() : nlohmann::json(r.observed)},
+             {"sessions", r.sessions},
+             {"source", r.rule->source}});
     }
     return out;
 }

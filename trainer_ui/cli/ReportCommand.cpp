@@ -41,7 +41,9 @@ nlohmann::json progressReport(db::Records& records, const db::Actor& actor, cons
 
 namespace {
 
-constexpr const char* kXapiHome = "https://colonosim.org";  ///< IRI root of our activities and extensions
+/// IRI root of our activities, accounts and extensions unless --xapi-home names the organisation's own
+/// (the reserved .example domain: no one else's IRIs are claimed).
+constexpr const char* kXapiHome = "https://colonosim.example";
 
 std::string readFile(const std::string& path)
 {
@@ -118,11 +120,10 @@ std::string isoDuration(double seconds)
     return out.str();
 }
 
-nlohmann::json xapiReport(const std::vector<db::SessionRow>& sessions)
+nlohmann::json xapiReport(const std::vector<db::SessionRow>& sessions, const std::string& home)
 {
     const auto curriculum =
         curricula::parseCurriculum(curricula::coreCurriculumXml(), "colonoscopy-core.xml");
-    const std::string home = kXapiHome;
     nlohmann::json statements = nlohmann::json::array();
     for (const auto& s : sessions) {
         const curricula::Task* task = curriculum.value->find(s.task);
@@ -327,15 +328,17 @@ int verify(const CommandLine& line, const std::string& file)
 
 int runReport(std::span<char* const> args)
 {
-    std::vector<std::string> options = {"--user", "--format", "--out"};
+    std::vector<std::string> options = {"--user", "--format", "--out", "--xapi-home"};
     options.insert(options.end(), kRecordsOptions.begin(), kRecordsOptions.end());
     const CommandLine line(args, {"--help"}, options);
     if (line.has("--help")) {
-        std::cout << "usage: colonosim report --user NAME --format pdf|csv|xapi --out FILE [--as NAME] [--db "
-                     "FILE]\n"
-                     "       colonosim report verify FILE [--db FILE]\n"
-                     "pdf: the signed certification report (administrators); csv: every metric of every\n"
-                     "session; xapi: xAPI statements (JSON). verify exits 0 when valid, 1 when invalid.\n";
+        std::cout
+            << "usage: colonosim report --user NAME --format pdf|csv|xapi --out FILE [--as NAME] [--db "
+               "FILE]\n"
+               "       colonosim report verify FILE [--db FILE]\n"
+               "pdf: the signed certification report (administrators); csv: every metric of every\n"
+               "session; xapi: xAPI statements (JSON; --xapi-home IRI: the organisation's IRI root for\n"
+               "accounts, activities and extensions). verify exits 0 when valid, 1 when invalid.\n";
         return 0;
     }
     ensureQtApplication(true);
@@ -361,7 +364,11 @@ int runReport(std::span<char* const> args)
         if (*format == "csv") {
             writeFile(*out, csvReport(sessions));
         } else if (*format == "xapi") {
-            writeFile(*out, xapiReport(sessions).dump(2) + "\n");
+            const std::string home = line.value("--xapi-home").value_or(kXapiHome);
+            if (home.rfind("https://", 0) != 0 && home.rfind("http://", 0) != 0) {
+                throw UsageError("--xapi-home = " + home + " is not an http(s) IRI");
+            }
+            writeFile(*out, xapiReport(sessions, home).dump(2) + "\n");
         } else {
             if (actor.role != db::Role::Administrator) {
                 throw db::AccessDenied(actor.name + " (" + db::roleName(actor.role) +
