@@ -146,6 +146,31 @@ TEST_F(RecordsCli, UsersRolesAndRefusals)
     EXPECT_NE(task.output.find("--task = polypectomy cannot be run yet"), std::string::npos) << task.output;
 }
 
+TEST_F(RecordsCli, AnInstructorReadsTheStudentsOfTheirCohortsOnly)
+{
+    auto must = [](const Result& r) { ASSERT_EQ(r.status, 0) << r.output; };
+    must(colonosim(kAdmin + " COLONOSIM_NEW_PASSWORD=teacher-secret-1",
+                   "user add teacher --role instructor --as admin" + db()));
+    must(colonosim(kAdmin, "user cohort add spring" + db() + " --as admin"));
+    must(colonosim(kAdmin, "user cohort member spring ada --as admin" + db()));
+    must(colonosim(kAdmin, "user cohort instructor spring teacher --as admin" + db()));
+    const auto ada =
+        colonosim("COLONOSIM_PASSWORD=teacher-secret-1", "progress --user ada --as teacher" + db());
+    EXPECT_EQ(ada.status, 0) << ada.output;
+    const auto bob =
+        colonosim("COLONOSIM_PASSWORD=teacher-secret-1", "progress --user bob --as teacher" + db());
+    EXPECT_EQ(bob.status, 2);
+    EXPECT_NE(bob.output.find("an instructor reads only the students of their cohorts"), std::string::npos)
+        << bob.output;
+    const auto byStudent =
+        colonosim("COLONOSIM_PASSWORD=ada-secret-1", "user cohort add autumn --as ada" + db());
+    EXPECT_EQ(byStudent.status, 2);
+    EXPECT_NE(byStudent.output.find("may not add cohorts"), std::string::npos) << byStudent.output;
+    const auto notInstructor = colonosim(kAdmin, "user cohort instructor spring bob --as admin" + db());
+    EXPECT_EQ(notInstructor.status, 2);
+    EXPECT_NE(notInstructor.output.find("only an instructor can be assigned"), std::string::npos);
+}
+
 TEST_F(RecordsCli, SessionsAreStoredScoredAndRescored)
 {
     const auto progress = colonosim("COLONOSIM_PASSWORD=ada-secret-1", "progress --user ada --json" + db());

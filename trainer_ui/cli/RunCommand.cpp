@@ -204,7 +204,11 @@ int runProcedure(std::span<char* const> args)
                  ? "composite score " + std::to_string(result.scores.at("composite")) +
                        (result.scores.at("benchmark_met") > 0.5 ? " (benchmark met)" : " (benchmark not met)")
                  : std::string("not scored (no benchmark set stored for this task yet)")) +
-            ", task now " + result.progress.at(task) + '\n';
+            ", task now " + result.progress.at(task) +
+            (result.progress.at(task) == "locked"
+                 ? " (its prerequisites are not yet proficient: this attempt does not count)"
+                 : "") +
+            '\n';
     }
     if (line.has("--json")) {
         std::cout << summary.dump(2) << '\n';

@@ -2,6 +2,9 @@
 /// `colonosim user add|list|passwd`: the users of the records. Acting users
 /// authenticate with `--as NAME` and COLONOSIM_PASSWORD or --password-file;
 /// a new password comes from COLONOSIM_NEW_PASSWORD or --new-password-file.
+/// `colonosim user cohort add COHORT | member COHORT USER | instructor COHORT USER`
+/// sets up cohorts: an instructor reads the records of the students of the
+/// cohorts they are assigned to.
 
 #include "trainer_ui/cli/Commands.h"
 #include "trainer_ui/cli/RecordsAccess.h"
@@ -22,21 +25,40 @@ int runUser(std::span<char* const> args)
         std::cout << "usage: colonosim user add NAME --role student|instructor|administrator --as ADMIN\n"
                      "       colonosim user list --as NAME [--json]\n"
                      "       colonosim user passwd NAME --as NAME\n"
+                     "       colonosim user cohort add COHORT | member COHORT USER | instructor COHORT USER "
+                     "--as ADMIN\n"
                      "  --db FILE               the records (default: records.sqlite in the user's data "
                      "directory)\n"
                      "  --as NAME               who acts; password from COLONOSIM_PASSWORD or "
                      "--password-file FILE\n"
                      "  --new-password-file F   the new password (else COLONOSIM_NEW_PASSWORD)\n"
-                     "Only administrators add users or change another user's password.\n";
+                     "Only administrators add users, manage cohorts or change another user's password.\n";
         return line.has("--help") ? 0 : 2;
     }
     const std::string& action = words[0];
-    if (action != "add" && action != "list" && action != "passwd") {
-        throw UsageError("action = " + action + " is not one of add, list, passwd");
+    if (action != "add" && action != "list" && action != "passwd" && action != "cohort") {
+        throw UsageError("action = " + action + " is not one of add, list, passwd, cohort");
     }
     OpenRecords open = openRecords(line, std::cerr);
     const db::Actor actor = authenticate(*open.records, line, line.value("--as").value_or(""));
     try {
+        if (action == "cohort") {
+            const std::string what = words.size() > 1 ? words[1] : "";
+            if (what == "add" && words.size() == 3) {
+                open.records->addCohort(actor, words[2]);
+                std::cout << "cohort " << words[2] << " added\n";
+            } else if (what == "member" && words.size() == 4) {
+                open.records->addMember(actor, words[2], words[3]);
+                std::cout << words[3] << " is a member of " << words[2] << '\n';
+            } else if (what == "instructor" && words.size() == 4) {
+                open.records->assignInstructor(actor, words[2], words[3]);
+                std::cout << words[3] << " instructs " << words[2] << '\n';
+            } else {
+                throw UsageError(
+                    "expected: user cohort add COHORT | member COHORT USER | instructor COHORT USER");
+            }
+            return 0;
+        }
         if (action == "list") {
             nlohmann::json out = nlohmann::json::array();
             for (const db::UserRow& u : open.records->listUsers(actor)) {
