@@ -35,3 +35,10 @@ endif()
 
 # SDL2: gamepads through its game-controller API.
 pkg_check_modules(SDL2 REQUIRED IMPORTED_TARGET sdl2)
+
+# Qt enters at db (QtCore, QtSql) and trainer_ui (QtGui for the PDF reports).
+find_package(Qt6 REQUIRED COMPONENTS Core Sql Gui)
+# SQLite itself: the online backup API (db); the same library the QSQLITE driver uses.
+pkg_check_modules(SQLITE3 REQUIRED IMPORTED_TARGET sqlite3)
+# libsodium: Argon2id password hashes (db) and Ed25519 report signatures (trainer_ui).
+pkg_check_modules(SODIUM REQUIRED IMPORTED_TARGET libsodium)

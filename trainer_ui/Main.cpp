@@ -17,19 +17,26 @@
 namespace {
 void printUsage()
 {
-    std::cout << "usage: colonosim [SUBCOMMAND] [OPTIONS]\n"
-                 "With no subcommand: the headless demonstration (the trainer arrives later).\n"
-                 "Subcommands (each has --help):\n"
-                 "  demo        headless demonstration of the colon simulation\n"
-                 "  params      declared physical parameters with units, ranges and sources\n"
-                 "  mesh        import and check a patient-specific colon surface\n"
-                 "  bench       speed-versus-error report: bench [--quick] --out DIR\n"
-                 "  rod         cantilever equilibrium of the colonoscope's rod model, as JSON\n"
-                 "  run         one procedure: run --default --operator "
-                 "expert|novice|replay:TRACE|hdc:PORT|gamepad\n"
-                 "              --out DIR\n"
-                 "  case        patient cases: case generate|validate|stats (randomized from population "
-                 "statistics)\n";
+    std::cout
+        << "usage: colonosim [SUBCOMMAND] [OPTIONS]\n"
+           "With no subcommand: the headless demonstration (the trainer arrives later).\n"
+           "Subcommands (each has --help):\n"
+           "  demo        headless demonstration of the colon simulation\n"
+           "  params      declared physical parameters with units, ranges and sources\n"
+           "  mesh        import and check a patient-specific colon surface\n"
+           "  bench       speed-versus-error report: bench [--quick] --out DIR\n"
+           "  rod         cantilever equilibrium of the colonoscope's rod model, as JSON\n"
+           "  run         one procedure: run --default --operator "
+           "expert|novice|replay:TRACE|hdc:PORT|gamepad\n"
+           "              --out DIR\n"
+           "  case        patient cases: case generate|validate|stats (randomized from population "
+           "statistics)\n"
+           "  user        the records' users: user add|list|passwd (authenticate with --as NAME)\n"
+           "  progress    a trainee's tasks, learning curve and certification rules: progress --user NAME\n"
+           "  report      report --user NAME --format pdf|csv|xapi --out FILE; report verify FILE\n"
+           "  backup      online backup of the records: backup --out FILE\n"
+           "  benchmarks  benchmark sets from expert sessions: benchmarks derive|show --name SET\n"
+           "Records: run ... --user NAME [--db FILE] stores and scores a session.\n";
 }
 }  // namespace
 
@@ -64,6 +71,21 @@ int main(int argc, char** argv)
         }
         if (command == "case") {
             return cli::runCase(rest);
+        }
+        if (command == "user") {
+            return cli::runUser(rest);
+        }
+        if (command == "progress") {
+            return cli::runProgress(rest);
+        }
+        if (command == "report") {
+            return cli::runReport(rest);
+        }
+        if (command == "backup") {
+            return cli::runBackup(rest);
+        }
+        if (command == "benchmarks") {
+            return cli::runBenchmarks(rest);
         }
         std::cerr << "colonosim: unknown subcommand \"" << command << "\" (see colonosim --help)\n";
         return 2;

@@ -64,10 +64,10 @@ void HdcServer::serve(std::stop_token stop)
         }
         // One HDC at a time: anyone else is told why and closed.
         if (TcpLink other = m_listener.accept(0.0); other.open()) {
+            ++m_refusedConnections;  // counted before the refusal is sent: whoever reads it sees the count
             other.send(encodeStatus(kSimulatorStatusName, kStatusBusy, "busy: another HDC is connected"),
                        0.01);
             other.close();
-            ++m_refusedConnections;
         }
         incoming.clear();
         // Sleeps until the HDC sends or the simulator publishes a load (or 2 ms pass).

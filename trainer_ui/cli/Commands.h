@@ -14,5 +14,10 @@ int runBench(std::span<char* const> args);
 int runProcedure(std::span<char* const> args);
 int runRod(std::span<char* const> args);
 int runCase(std::span<char* const> args);
+int runUser(std::span<char* const> args);
+int runProgress(std::span<char* const> args);
+int runReport(std::span<char* const> args);
+int runBackup(std::span<char* const> args);
+int runBenchmarks(std::span<char* const> args);
 
 }  // namespace colonosim::cli

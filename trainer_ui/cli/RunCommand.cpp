@@ -5,15 +5,23 @@
 /// Writes DIR/session.trace (the input trace), DIR/samples.csv, DIR/events.csv and DIR/recording.txt (the
 /// canonical recording: two runs are bit-identical when these files are equal), and prints a summary: time to
 /// cecum, loops by type, peak handle force, peak discomfort.
+/// With `--user NAME [--db FILE] [--task ID]` the session is also stored and scored in the records: inserted
+/// as running before the first step, and completed in one transaction with its trace, recording, events,
+/// metrics, scores and the user's progress (see RecordsAccess.h for authentication).
 
 #include "case_generator/CaseReader.h"
 #include "case_generator/SceneSpec.h"
+#include "curricula/Curriculum.h"
+#include "db/RecordingCodec.h"
+#include "db/StoredTrace.h"
+#include "scoring/SessionMetrics.h"
 #include "simcore/devices/Gamepad.h"
 #include "simcore/devices/HdcOperator.h"
 #include "simcore/geometry/ProceduralColon.h"
 #include "simcore/procedure/Operator.h"
 #include "trainer_ui/cli/CommandLine.h"
 #include "trainer_ui/cli/Commands.h"
+#include "trainer_ui/cli/RecordsAccess.h"
 
 #include <nlohmann/json.hpp>
 
@@ -22,6 +30,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <sstream>
 
 namespace colonosim::cli {
 
@@ -58,12 +67,40 @@ nlohmann::json summarise(const procedure::Recording& recording, double duration)
     out["events"] = recording.events.size();
     return out;
 }
+
+QByteArray bytes(const std::vector<char>& v)
+{
+    return QByteArray(v.data(), static_cast<qsizetype>(v.size()));
+}
+
+/// The curriculum task a stored session belongs to; UsageError listing the runnable ones.
+std::string checkTask(const std::string& id)
+{
+    const auto curriculum =
+        curricula::parseCurriculum(curricula::coreCurriculumXml(), "colonoscopy-core.xml");
+    const curricula::Task* task = curriculum.value->find(id);
+    std::string runnable;
+    for (const curricula::Task& t : curriculum.value->tasks) {
+        if (t.available) {
+            runnable += (runnable.empty() ? "" : ", ") + t.id;
+        }
+    }
+    if (!task) {
+        throw UsageError("--task = " + id + " is not a task of colonoscopy-core (allowed: " + runnable + ")");
+    }
+    if (!task->available) {
+        throw UsageError("--task = " + id + " cannot be run yet: " + task->unavailableReason +
+                         " (allowed: " + runnable + ")");
+    }
+    return id;
+}
 }  // namespace
 
 int runProcedure(std::span<char* const> args)
 {
-    const CommandLine line(args, {"--default", "--json", "--help"},
-                           {"--case", "--operator", "--out", "--max-time"});
+    std::vector<std::string> options = {"--case", "--operator", "--out", "--max-time", "--user", "--task"};
+    options.insert(options.end(), kRecordsOptions.begin(), kRecordsOptions.end());
+    const CommandLine line(args, {"--default", "--json", "--help"}, options);
     if (line.has("--help")) {
         std::cout
             << "usage: colonosim run --default|--case FILE --operator "
@@ -75,7 +112,12 @@ int runProcedure(std::span<char* const> args)
                "  hdc:PORT       wait on PORT (1024-65535, loopback) for colonosim-hdc; the session runs\n"
                "                 whether or not a device is connected, holding the last input\n"
                "  gamepad        the first game controller SDL finds (left stick: insert and twist;\n"
-               "                 right stick: dials; A air, B water, X suction, Y mark lesion)\n";
+               "                 right stick: dials; A air, B water, X suction, Y mark lesion)\n"
+               "  --user NAME    store and score the session in the records as NAME (password from\n"
+               "                 COLONOSIM_PASSWORD or --password-file FILE)\n"
+               "  --db FILE      the records database (default: records.sqlite in the user's data "
+               "directory)\n"
+               "  --task ID      the curriculum task of the session (default navigation-straight)\n";
         return 0;
     }
     const std::optional<std::string> caseFile = line.value("--case");
@@ -107,11 +149,17 @@ int runProcedure(std::span<char* const> args)
         driver = procedure::makeOperator(*operatorName);
     }
     std::filesystem::create_directories(*out);
+    const std::optional<std::string> user = line.value("--user");
+    if (!user && (line.value("--db") || line.value("--task"))) {
+        throw UsageError("--db and --task store a session: they need --user NAME");
+    }
+    const std::string task = checkTask(line.value("--task").value_or("navigation-straight"));
 
     // A generated case sets the anatomy, the wall and the environment; its
     // lesions, diverticula and adhesions are not yet part of the loop's physics.
     procedure::ProcedureSettings settings;
     geometry::AnatomyParameters anatomyParameters;
+    int lesionsPresent = 0;
     if (caseFile) {
         const cases::ReadResult read = cases::readCaseFile(*caseFile);
         if (!read.ok()) {
@@ -121,6 +169,7 @@ int runProcedure(std::span<char* const> args)
             }
             throw UsageError(message);
         }
+        lesionsPresent = static_cast<int>(read.value->lesions.size());
         const cases::SceneSpec scene = cases::toScene(*read.value);
         anatomyParameters = scene.anatomy;
         settings.tissue = scene.tissue;
@@ -128,6 +177,34 @@ int runProcedure(std::span<char* const> args)
     }
     const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(anatomyParameters);
     procedure::ProcedureLoop loop(anatomy, settings);
+
+    // The records: the session row exists (running) before the first step.
+    OpenRecords records;
+    db::Actor actor;
+    qint64 session = 0;
+    if (user) {
+        records = openRecords(line, std::cerr);
+        actor = authenticate(*records.records, line, *user);
+        std::optional<qint64> caseId;
+        if (caseFile) {
+            std::ifstream in(*caseFile);
+            std::stringstream xml;
+            xml << in.rdbuf();
+            caseId = records.records->storeCase(actor, std::filesystem::path(*caseFile).filename().string(),
+                                                xml.str());
+        }
+        // Which device drives the session: the HDC's own device name is also in the
+        // session's device_connected events.
+        std::string device = "scripted:" + *operatorName;
+        if (hdc != nullptr) {
+            device = *operatorName;
+        } else if (const auto* pad = dynamic_cast<const devices::GamepadOperator*>(driver.get())) {
+            device = "gamepad:" + pad->name();
+        } else if (operatorName->starts_with("replay:")) {
+            device = "replay";
+        }
+        session = records.records->beginSession(actor, caseId, task, device);
+    }
     const auto steps = static_cast<long>(maxTime / loop.trace().loopStep);
     for (long s = 0; s < steps && !driver->finished(); ++s) {
         if (hdc != nullptr) {
@@ -140,7 +217,38 @@ int runProcedure(std::span<char* const> args)
     loop.recording().writeCsv(dir / "samples.csv", dir / "events.csv");
     std::ofstream(dir / "recording.txt") << loop.recording().canonicalText();
 
-    const nlohmann::json summary = summarise(loop.recording(), loop.time());
+    nlohmann::json summary = summarise(loop.recording(), loop.time());
+    std::string storedLine;
+    if (user) {
+        scoring::ScoringContext context;
+        context.colonLength = settings.recorder.colonLength;
+        context.lesionsPresent = lesionsPresent;
+        db::SessionResult result;
+        result.trace = bytes(db::encodeStoredTrace(loop.trace()));
+        result.recording = bytes(db::encodeRecording(loop.recording()));
+        result.duration = loop.time();
+        for (const auto& e : loop.recording().events) {
+            result.events.push_back({e.time, std::string(procedure::eventName(e.kind)), e.detail});
+        }
+        scoreInto(*records.records, actor, task, scoring::computeMetrics(loop.recording(), context), result);
+        records.records->completeSession(actor, session, result);
+        summary["session"] = session;
+        summary["task"] = task;
+        summary["scores"] = result.scores;
+        summary["task_state"] = result.progress.at(task);
+        storedLine =
+            std::string() + "stored: session " + std::to_string(session) + " of " + *user + ", task " + task +
+            ", " +
+            (result.scores.contains("composite")
+                 ? "composite score " + std::to_string(result.scores.at("composite")) +
+                       (result.scores.at("benchmark_met") > 0.5 ? " (benchmark met)" : " (benchmark not met)")
+                 : std::string("not scored (no benchmark set stored for this task yet)")) +
+            ", task now " + result.progress.at(task) +
+            (result.progress.at(task) == "locked"
+                 ? " (its prerequisites are not yet proficient: this attempt does not count)"
+                 : "") +
+            '\n';
+    }
     if (line.has("--json")) {
         std::cout << summary.dump(2) << '\n';
     } else {
@@ -155,7 +263,8 @@ int runProcedure(std::span<char* const> args)
                   << "peak handle force: " << summary["peak_handle_force_N"] << " N; peak discomfort "
                   << summary["peak_discomfort"] << " / 10\n"
                   << "written: " << (dir / "session.trace").string()
-                  << ", samples.csv, events.csv, recording.txt\n";
+                  << ", samples.csv, events.csv, recording.txt\n"
+                  << storedLine;
     }
     return 0;
 }

@@ -1,0 +1,86 @@
+#include "scoring/MetricDefinitions.h"
+
+#include <array>
+
+namespace colonosim::scoring {
+
+namespace {
+constexpr std::string_view kMentor =
+    "GI Mentor II validation studies (Phitayakorn et al. 2009; Fayez et al. 2010)";
+constexpr std::string_view kQuality = "ASGE/ACG quality indicators; ESGE 2017; UK bowel cancer screening";
+constexpr std::string_view kForce = "Colonoscopy Force Monitor study; Endo TS-1; Appleyard et al. 2000";
+constexpr std::string_view kDops = "JAG colonoscopy DOPS; GAGES-C";
+
+constexpr std::array kDefinitions = {
+    MetricDefinition{"time_to_cecum", "s", Better::Lower,
+                     "from insertion to the cecum; absent when not reached", kMentor},
+    MetricDefinition{"cecal_intubation", "1", Better::Higher, "1 when the cecum was reached, else 0",
+                     kQuality},
+    MetricDefinition{"total_time", "s", Better::Neither, "length of the session", kMentor},
+    MetricDefinition{"withdrawal_time", "s", Better::Higher, "from the cecum to the end of the session",
+                     kQuality},
+    MetricDefinition{"effective_withdrawal_time", "s", Better::Higher,
+                     "withdrawal time less red-out (wall contact) time", "withdrawal quality studies"},
+    MetricDefinition{
+        "mucosa_visualised", "1", Better::Higher,
+        "share of the colon length passed by the tip with a clear view (geometric estimate until the "
+        "renderer's coverage exists)",
+        kMentor},
+    MetricDefinition{"clear_view", "1", Better::Higher, "share of the time without red-out", kMentor},
+    MetricDefinition{"red_out_count", "1", Better::Lower, "red-outs (lens against the wall)",
+                     "JAG DOPS: tip control avoids red-outs"},
+    MetricDefinition{"loop_count", "1", Better::Lower, "loops formed", kMentor},
+    MetricDefinition{"looped_time", "s", Better::Lower, "time with a loop in the shaft", kMentor},
+    MetricDefinition{"loops_reduced", "1", Better::Higher, "loops formed that were resolved again",
+                     "JAG DOPS: loop management"},
+    MetricDefinition{"loops_n", "1", Better::Lower, "sigmoid N-loops", "loop types, clinical-assessment.md"},
+    MetricDefinition{"loops_alpha", "1", Better::Lower, "alpha loops", "loop types, clinical-assessment.md"},
+    MetricDefinition{"loops_reverse_alpha", "1", Better::Lower, "reverse alpha loops",
+                     "loop types, clinical-assessment.md"},
+    MetricDefinition{"loops_gamma", "1", Better::Lower, "gamma and deep transverse loops",
+                     "loop types, clinical-assessment.md"},
+    MetricDefinition{"loops_reverse_splenic", "1", Better::Lower, "reverse splenic flexure loops",
+                     "loop types, clinical-assessment.md"},
+    MetricDefinition{"max_handle_force", "N", Better::Lower, "largest axial handle force (magnitude)",
+                     kForce},
+    MetricDefinition{"mean_handle_force", "N", Better::Lower, "mean axial handle force (magnitude)", kForce},
+    MetricDefinition{"max_handle_torque", "N m", Better::Lower, "largest handle torque (magnitude)", kForce},
+    MetricDefinition{"mean_handle_torque", "N m", Better::Lower, "mean handle torque (magnitude)", kForce},
+    MetricDefinition{"excessive_force_time", "s", Better::Lower,
+                     "time with the handle force above the recorder's excessive-force threshold", kForce},
+    MetricDefinition{"discomfort_peak", "1", Better::Lower, "peak discomfort, 0-10",
+                     "GI Mentor II; Endo TS-1"},
+    MetricDefinition{"discomfort_moderate_share", "1", Better::Lower,
+                     "share of the time at moderate or worse discomfort", "JAG comfort indicator"},
+    MetricDefinition{"perforation", "1", Better::Lower, "1 when the wall was perforated", "UK screening"},
+    MetricDefinition{"lesions_present", "1", Better::Neither, "lesions in the case", kMentor},
+    MetricDefinition{
+        "lesions_detected", "1", Better::Higher,
+        "lesion marks, at most one per lesion present (whether the lesion was in view is not yet "
+        "known to the recording)",
+        kMentor},
+    MetricDefinition{"lesions_missed", "1", Better::Lower, "lesions present less lesions detected", kMentor},
+    MetricDefinition{"tip_path_length", "m", Better::Lower, "distance travelled by the tip", kMentor},
+    MetricDefinition{"insertion_efficiency", "1", Better::Higher,
+                     "deepest insertion over the total forward shaft travel (1: never backed off)",
+                     "GI Mentor II efficiency"},
+    MetricDefinition{"max_insertion", "m", Better::Higher, "deepest insertion of the shaft", kDops},
+};
+}  // namespace
+
+std::span<const MetricDefinition> metricDefinitions()
+{
+    return kDefinitions;
+}
+
+const MetricDefinition* findMetric(std::string_view name)
+{
+    for (const MetricDefinition& d : kDefinitions) {
+        if (d.name == name) {
+            return &d;
+        }
+    }
+    return nullptr;
+}
+
+}  // namespace colonosim::scoring

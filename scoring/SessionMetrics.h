@@ -1,0 +1,60 @@
+#pragma once
+/// \file
+/// Metrics of one session, computed from its procedure Recording (samples at
+/// 100 Hz and edge events). Definitions: MetricDefinitions.cpp.
+///   time to cecum      first CecumReached event (absent when never reached)
+///   withdrawal time    end of session - time to cecum; effective: less red-out time
+///   clear view         1 - (red-out time / total time), red-out from RedOutStart/End
+///   mucosa visualised  GEOMETRIC ESTIMATE (the renderer does not yet report
+///                      coverage): the colon is cut into bins along its length;
+///                      a bin counts as seen when a sample with a clear view has
+///                      the shaft's insertion depth in it. Insertion stands in
+///                      for the tip's arc length, so a looped shaft overstates it.
+///   loops              LoopFormed / LoopResolved events; looped time from samples
+///   forces             |handle force|, |handle torque| over the samples; time with
+///                      |handle force| above the excessive threshold
+///   discomfort         peak, and share of samples >= the moderate threshold
+///   lesions            marks (LesionMarked) capped at the lesions present; time to
+///                      detection needs lesion positions in the recording (not yet)
+///   path length        sum of |tip(k+1) - tip(k)|
+///   insertion efficiency  max insertion / sum of positive insertion steps
+
+#include "simcore/params/Parameter.h"
+#include "simcore/procedure/Recorder.h"
+
+#include <map>
+#include <string>
+
+namespace colonosim::scoring {
+
+using MetricValues = std::map<std::string, double>;
+
+struct ScoringContext {
+    static constexpr params::ParameterSpec moderateDiscomfortSpec{
+        "moderateDiscomfort",
+        "1",
+        6.0,
+        0.0,
+        10.0,
+        "discomfort (0-10) counted as moderate or worse",
+        "JAG comfort: moderate-severe is > 3 on a 5-point scale, i.e. above 6 on 0-10"};
+    static constexpr params::ParameterSpec mucosaBinSpec{
+        "mucosaBin",
+        "m",
+        0.01,
+        0.001,
+        0.1,
+        "length of a colon bin of the geometric mucosa estimate",
+        "model choice: 1 cm, about a third of the field of view at working distance"};
+    double colonLength = 1.66;  ///< m, from the anatomy
+    double excessiveForce = procedure::RecorderParameters::excessiveForceSpec.defaultValue;  ///< N
+    double moderateDiscomfort = moderateDiscomfortSpec.defaultValue;
+    double mucosaBin = mucosaBinSpec.defaultValue;  ///< m
+    int lesionsPresent = 0;
+};
+
+/// All declared metrics except time_to_cecum when the cecum was not reached.
+[[nodiscard]] MetricValues computeMetrics(const procedure::Recording& recording,
+                                          const ScoringContext& context);
+
+}  // namespace colonosim::scoring
