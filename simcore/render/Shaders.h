@@ -1,0 +1,270 @@
+#pragma once
+/// \file
+/// GLSL 330 core sources of every pass, shared by all hosts.
+///
+/// Projection (all 3D passes): an equidistant ("f-theta") fisheye, evaluated
+/// per vertex. A camera-frame point c at angle theta = acos(c_z / |c|) from
+/// the view axis lands at image radius theta / halfFieldOfView (1 = the edge
+/// of the image circle, which fills the image height), in the direction of
+/// (c_x, c_y). This is the barrel distortion of an endoscope's wide-angle
+/// lens, and unlike a perspective projection it covers 140-170 degrees in a
+/// single pass. Depth is the linear distance |c| between near and far. The
+/// projection is evaluated at the vertices only, so a triangle's edges stay
+/// straight in the image; with the visual mesh's 2-3 mm edges the error is a
+/// fraction of a pixel beyond a few centimetres. Points beyond the image
+/// circle are clipped (gl_ClipDistance) before they can wrap around.
+
+namespace colonosim::render::shaders {
+
+/// Shared vertex-stage projection.
+inline constexpr const char* kFisheye = R"(
+uniform mat3 uWorldToCamera;
+uniform vec3 uCameraPosition;
+uniform float uHalfFieldOfView;
+uniform float uAspect;
+uniform vec2 uDepthRange;
+vec4 fisheye(vec3 world, out vec3 cameraPoint)
+{
+    vec3 c = uWorldToCamera * (world - uCameraPosition);
+    cameraPoint = c;
+    float d = max(length(c), 1e-9);
+    float theta = acos(clamp(c.z / d, -1.0, 1.0));
+    float rxy = length(c.xy);
+    vec2 direction = rxy > 1e-12 ? c.xy / rxy : vec2(0.0);
+    vec2 image = direction * theta / uHalfFieldOfView;
+    image.x /= uAspect;
+    gl_ClipDistance[0] = uHalfFieldOfView * 1.5 - theta;
+    float depth = (d - uDepthRange.x) / (uDepthRange.y - uDepthRange.x);
+    return vec4(image, depth * 2.0 - 1.0, 1.0);
+}
+)";
+
+/// The wall: mapped visual mesh with its static surface attributes.
+inline constexpr const char* kWallVertex = R"(
+layout(location = 0) in vec3 aPosition;
+layout(location = 1) in vec3 aNormal;
+layout(location = 2) in vec2 aSurface;   // arc length (m), clock angle (rad)
+layout(location = 3) in vec4 aFinding;   // lesion weight, tissue code, stool, diverticulum
+out vec3 vWorld;
+out vec3 vNormal;
+out vec2 vSurface;
+out vec4 vFinding;
+void main()
+{
+    vec3 c;
+    gl_Position = fisheye(aPosition, c);
+    vWorld = aPosition;
+    vNormal = aNormal;
+    vSurface = aSurface;
+    vFinding = aFinding;
+}
+)";
+
+/// Value noise and fractal sums on the wall's (arc length, angle) chart.
+inline constexpr const char* kNoise = R"(
+float hash(vec2 p)
+{
+    p = fract(p * vec2(123.34, 456.21));
+    p += dot(p, p + 45.32);
+    return fract(p.x * p.y);
+}
+float noise(vec2 p)
+{
+    vec2 i = floor(p);
+    vec2 f = fract(p);
+    vec2 u = f * f * (3.0 - 2.0 * f);
+    return mix(mix(hash(i), hash(i + vec2(1.0, 0.0)), u.x),
+               mix(hash(i + vec2(0.0, 1.0)), hash(i + vec2(1.0, 1.0)), u.x), u.y);
+}
+float fbm(vec2 p)
+{
+    float sum = 0.0;
+    float amplitude = 0.5;
+    for (int k = 0; k < 4; ++k) {
+        sum += amplitude * noise(p);
+        p = p * 2.03 + vec2(17.1, 3.7);
+        amplitude *= 0.5;
+    }
+    return sum;
+}
+// Thin branching lines where a warped fractal crosses its mid level.
+float vessels(vec2 p)
+{
+    vec2 q = p + 0.6 * vec2(fbm(p * 0.7), fbm(p * 0.7 + vec2(5.2, 1.3)));
+    float v = abs(fbm(q) - 0.5);
+    float fine = abs(fbm(q * 2.7 + vec2(2.0)) - 0.5);
+    return max(1.0 - smoothstep(0.0, 0.025, v), 0.6 * (1.0 - smoothstep(0.0, 0.02, fine)));
+}
+)";
+
+inline constexpr const char* kWallFragment = R"(
+in vec3 vWorld;
+in vec3 vNormal;
+in vec2 vSurface;
+in vec4 vFinding;
+out vec4 fragColour;
+uniform vec3 uLightPosition;
+uniform float uLightIntensity;      // irradiance scale at 1 cm
+uniform float uSpotExponent;
+uniform vec3 uViewAxis;
+uniform float uSpecular;
+uniform float uBumpDepth;           // m
+void main()
+{
+    // Chart coordinates in millimetres of wall: arc length and arc around.
+    vec2 chart = vec2(vSurface.x * 1000.0, vSurface.y * 25.0);
+    vec3 toLight = uLightPosition - vWorld;
+    float distance = max(length(toLight), 1e-4);
+    vec3 L = toLight / distance;
+    vec3 N = normalize(vNormal);
+    if (dot(N, L) < 0.0) {
+        N = -N;
+    }
+    // Normal perturbation from a height field (bump mapping by screen derivatives).
+    float lesion = vFinding.x;
+    float height = uBumpDepth * (0.6 * fbm(chart * 0.9) + 0.4 * noise(chart * 4.0)) +
+                   lesion * uBumpDepth * 2.0 * noise(chart * 6.0);
+    vec3 dpdx = dFdx(vWorld);
+    vec3 dpdy = dFdy(vWorld);
+    float dhdx = dFdx(height);
+    float dhdy = dFdy(height);
+    vec3 r1 = cross(dpdy, N);
+    vec3 r2 = cross(N, dpdx);
+    float det = dot(dpdx, r1);
+    if (abs(det) > 1e-20) {
+        vec3 gradient = sign(det) * (dhdx * r1 + dhdy * r2);
+        N = normalize(abs(det) * N - gradient);
+    }
+
+    // Mucosa: pink with a submucosal vessel network.
+    vec3 albedo = vec3(0.93, 0.50, 0.44) * (0.85 + 0.3 * fbm(chart * 0.25));
+    float vessel = vessels(chart * 0.22);
+    albedo = mix(albedo, vec3(0.62, 0.12, 0.12), 0.55 * vessel * (1.0 - lesion));
+
+    // Lesions: 0 adenoma (redder, pit pattern), 1 serrated (pale, mucus cap), 2 cancer.
+    int tissue = int(vFinding.y + 0.5);
+    vec3 lesionColour = tissue == 0 ? vec3(0.86, 0.36, 0.32) * (0.8 + 0.4 * noise(chart * 5.0))
+                        : tissue == 1 ? vec3(0.90, 0.74, 0.58) * (0.85 + 0.3 * noise(chart * 3.0))
+                                      : vec3(0.55, 0.14, 0.16) * (0.6 + 0.8 * fbm(chart * 2.0));
+    albedo = mix(albedo, lesionColour, lesion);
+    // Diverticulum: a dark pocket.
+    albedo *= 1.0 - 0.75 * vFinding.w;
+    // Residual stool: brown-yellow patches covering the given fraction.
+    float stoolMask = smoothstep(1.0 - vFinding.z, 1.0 - vFinding.z + 0.08, fbm(chart * 0.08 + vec2(31.0)));
+    albedo = mix(albedo, vec3(0.55, 0.40, 0.12), stoolMask * step(0.001, vFinding.z));
+
+    // Light at the tip: inverse-square fall-off and the light guide's cone.
+    float spot = pow(max(dot(-L, uViewAxis), 0.0), uSpotExponent);
+    float irradiance = uLightIntensity * 1e-4 / (distance * distance) * spot;
+    float diffuse = max(dot(N, L), 0.0);
+    // Wet mucosa: a sharp specular lobe (light and eye coincide, so H = L),
+    // stronger where mucus pools.
+    float wet = uSpecular * (0.6 + 0.8 * noise(chart * 0.5)) * (1.0 - 0.7 * stoolMask);
+    float specular = wet * pow(max(dot(N, L), 0.0), 90.0);
+    vec3 colour = irradiance * (albedo * diffuse + vec3(specular));
+    // Film response: soft shoulder instead of clipping.
+    colour = vec3(1.0) - exp(-colour * 1.6);
+    fragColour = vec4(colour, 1.0);
+}
+)";
+
+/// Full-screen pass: lens soiling, red-out, image circle.
+inline constexpr const char* kScreenVertex = R"(
+out vec2 vUv;
+void main()
+{
+    vec2 corner = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));
+    vUv = corner;
+    gl_Position = vec4(corner * 2.0 - 1.0, 0.0, 1.0);
+}
+)";
+
+inline constexpr const char* kLensFragment = R"(
+in vec2 vUv;
+out vec4 fragColour;
+uniform sampler2D uScene;
+uniform vec2 uTexel;
+uniform float uAspect;
+uniform float uSoiling;   // 0 clean .. 1 fully soiled
+uniform float uRedOut;    // 0 .. 1
+uniform float uSeed;
+void main()
+{
+    vec2 p = vec2((vUv.x * 2.0 - 1.0) * uAspect, vUv.y * 2.0 - 1.0);
+    float radius = length(p);
+    vec3 colour = texture(uScene, vUv).rgb;
+    // Soiling: droplets and smears on the lens, which blur and veil the view.
+    float blobs = fbm(p * 3.0 + vec2(uSeed));
+    float mask = clamp(smoothstep(0.55 - 0.5 * uSoiling, 0.75 - 0.5 * uSoiling, blobs) * 1.2, 0.0, 1.0) *
+                 smoothstep(0.0, 0.15, uSoiling);
+    if (mask > 0.0) {
+        vec3 blurred = vec3(0.0);
+        for (int i = -3; i <= 3; ++i) {
+            for (int j = -3; j <= 3; ++j) {
+                blurred += texture(uScene, vUv + vec2(float(i), float(j)) * uTexel * 3.0).rgb;
+            }
+        }
+        blurred /= 49.0;
+        vec3 veil = mix(blurred, vec3(0.62, 0.55, 0.38) * (0.4 + 0.6 * dot(blurred, vec3(0.33))) + 0.12, 0.45);
+        colour = mix(colour, veil, mask);
+    }
+    // Red-out: the lens against the mucosa sees only transmitted red light.
+    vec3 red = vec3(0.62, 0.06, 0.04) * (0.8 + 0.4 * fbm(p * 2.0 + vec2(7.0)));
+    colour = mix(colour, red, uRedOut);
+    // The lens's image circle.
+    colour *= 1.0 - smoothstep(0.985, 1.0, radius);
+    fragColour = vec4(colour, 1.0);
+}
+)";
+
+/// Coverage: triangle index + 1 in RGB where the wall is seen well enough.
+inline constexpr const char* kCoverageVertex = R"(
+layout(location = 0) in vec3 aPosition;
+out vec3 vWorld;
+void main()
+{
+    vec3 c;
+    gl_Position = fisheye(aPosition, c);
+    vWorld = aPosition;
+}
+)";
+
+inline constexpr const char* kCoverageFragment = R"(
+in vec3 vWorld;
+out vec4 fragColour;
+uniform vec3 uCameraPosition;
+uniform float uWorkingDistance;
+uniform float uMinCosIncidence;
+void main()
+{
+    vec3 toCamera = uCameraPosition - vWorld;
+    float distance = length(toCamera);
+    vec3 n = normalize(cross(dFdx(vWorld), dFdy(vWorld)));
+    float cosIncidence = abs(dot(n, toCamera / max(distance, 1e-9)));
+    int id = 0;
+    if (distance <= uWorkingDistance && cosIncidence >= uMinCosIncidence) {
+        id = gl_PrimitiveID + 1;
+    }
+    fragColour = vec4(float(id & 255), float((id >> 8) & 255), float((id >> 16) & 255), 255.0) / 255.0;
+}
+)";
+
+/// Scope-shape view: flat-coloured 2D triangles.
+inline constexpr const char* kFlatVertex = R"(
+layout(location = 0) in vec2 aPosition;
+void main()
+{
+    gl_Position = vec4(aPosition, 0.0, 1.0);
+}
+)";
+
+inline constexpr const char* kFlatFragment = R"(
+out vec4 fragColour;
+uniform vec4 uColour;
+void main()
+{
+    fragColour = uColour;
+}
+)";
+
+}  // namespace colonosim::render::shaders
