@@ -27,7 +27,9 @@ void printUsage()
            "  rod         cantilever equilibrium of the colonoscope's rod model, as JSON\n"
            "  run         one procedure: run --default --operator expert|novice|replay:TRACE --out DIR\n"
            "  case        patient cases: case generate|validate|stats (randomized from population "
-           "statistics)\n";
+           "statistics)\n"
+           "  render      endoscope and scope-shape views as PNG: render --default|--case FILE --out "
+           "view.png\n";
 }
 }  // namespace
 
@@ -62,6 +64,9 @@ int main(int argc, char** argv)
         }
         if (command == "case") {
             return cli::runCase(rest);
+        }
+        if (command == "render") {
+            return cli::runRender(rest);
         }
         std::cerr << "colonosim: unknown subcommand \"" << command << "\" (see colonosim --help)\n";
         return 2;

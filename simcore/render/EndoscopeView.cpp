@@ -61,9 +61,9 @@ EndoscopeView::EndoscopeView(const GlFunctions& gl, const WallSurface& surface,
     gl.BindBuffer(GL_ARRAY_BUFFER, m_staticBuffer);
     gl.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(fixed.size() * sizeof(float)), fixed.data(),
                   GL_STATIC_DRAW);
-    gl.VertexAttribPointer(2, 2, GL_FLOAT, GL_FALSE, 6 * sizeof(float), nullptr);
-    gl.VertexAttribPointer(3, 4, GL_FLOAT, GL_FALSE, 6 * sizeof(float),
-                           reinterpret_cast<void*>(2 * sizeof(float)));
+    gl.VertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, 7 * sizeof(float), nullptr);
+    gl.VertexAttribPointer(3, 4, GL_FLOAT, GL_FALSE, 7 * sizeof(float),
+                           reinterpret_cast<void*>(3 * sizeof(float)));
     gl.EnableVertexAttribArray(2);
     gl.EnableVertexAttribArray(3);
 

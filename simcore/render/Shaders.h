@@ -43,11 +43,11 @@ vec4 fisheye(vec3 world, out vec3 cameraPoint)
 inline constexpr const char* kWallVertex = R"(
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
-layout(location = 2) in vec2 aSurface;   // arc length (m), clock angle (rad)
+layout(location = 2) in vec3 aSurface;   // chart: s, r cos(theta), r sin(theta) (m)
 layout(location = 3) in vec4 aFinding;   // lesion weight, tissue code, stool, diverticulum
 out vec3 vWorld;
 out vec3 vNormal;
-out vec2 vSurface;
+out vec3 vSurface;
 out vec4 vFinding;
 void main()
 {
@@ -62,45 +62,53 @@ void main()
 
 /// Value noise and fractal sums on the wall's (arc length, angle) chart.
 inline constexpr const char* kNoise = R"(
-float hash(vec2 p)
+// Integer hash of a lattice point (exact at any coordinate size).
+float hash(vec3 p)
 {
-    p = fract(p * vec2(123.34, 456.21));
-    p += dot(p, p + 45.32);
-    return fract(p.x * p.y);
+    uvec3 q = uvec3(ivec3(floor(p)) + 65536);
+    uint h = (q.x * 1597334673u) ^ (q.y * 3812015801u) ^ (q.z * 2798796415u);
+    h = (h ^ (h >> 16u)) * 2246822519u;
+    h ^= h >> 13u;
+    return float(h) * (1.0 / 4294967295.0);
 }
-float noise(vec2 p)
+float noise(vec3 p)
 {
-    vec2 i = floor(p);
-    vec2 f = fract(p);
-    vec2 u = f * f * (3.0 - 2.0 * f);
-    return mix(mix(hash(i), hash(i + vec2(1.0, 0.0)), u.x),
-               mix(hash(i + vec2(0.0, 1.0)), hash(i + vec2(1.0, 1.0)), u.x), u.y);
+    vec3 i = floor(p);
+    vec3 f = fract(p);
+    vec3 u = f * f * (3.0 - 2.0 * f);
+    return mix(mix(mix(hash(i), hash(i + vec3(1, 0, 0)), u.x),
+                   mix(hash(i + vec3(0, 1, 0)), hash(i + vec3(1, 1, 0)), u.x), u.y),
+               mix(mix(hash(i + vec3(0, 0, 1)), hash(i + vec3(1, 0, 1)), u.x),
+                   mix(hash(i + vec3(0, 1, 1)), hash(i + vec3(1, 1, 1)), u.x), u.y), u.z);
 }
-float fbm(vec2 p)
+float fbm(vec3 p)
 {
     float sum = 0.0;
     float amplitude = 0.5;
     for (int k = 0; k < 4; ++k) {
         sum += amplitude * noise(p);
-        p = p * 2.03 + vec2(17.1, 3.7);
+        p = p * 2.03 + vec3(17.1, 3.7, 9.2);
         amplitude *= 0.5;
     }
     return sum;
 }
-// Thin branching lines where a warped fractal crosses its mid level.
-float vessels(vec2 p)
+// Thin branching lines where warped noise crosses its mid level; the line
+// edge is widened by the pixel footprint (fwidth) so it does not alias.
+float vessels(vec3 p)
 {
-    vec2 q = p + 0.6 * vec2(fbm(p * 0.7), fbm(p * 0.7 + vec2(5.2, 1.3)));
-    float v = abs(fbm(q) - 0.5);
-    float fine = abs(fbm(q * 2.7 + vec2(2.0)) - 0.5);
-    return max(1.0 - smoothstep(0.0, 0.025, v), 0.6 * (1.0 - smoothstep(0.0, 0.02, fine)));
+    vec3 q = p + 0.8 * vec3(fbm(p * 0.5), fbm(p * 0.5 + vec3(5.2, 1.3, 2.1)), fbm(p * 0.5 + vec3(1.7, 9.2, 4.4)));
+    float v = abs(noise(q) - 0.5);
+    float large = 1.0 - smoothstep(0.025, 0.025 + 1.5 * fwidth(v), v);
+    float v2 = abs(noise(q * 2.3 + vec3(3.0)) - 0.5);
+    float small = 1.0 - smoothstep(0.018, 0.018 + 1.5 * fwidth(v2), v2);
+    return max(large, 0.6 * small);
 }
 )";
 
 inline constexpr const char* kWallFragment = R"(
 in vec3 vWorld;
 in vec3 vNormal;
-in vec2 vSurface;
+in vec3 vSurface;
 in vec4 vFinding;
 out vec4 fragColour;
 uniform vec3 uLightPosition;
@@ -111,8 +119,8 @@ uniform float uSpecular;
 uniform float uBumpDepth;           // m
 void main()
 {
-    // Chart coordinates in millimetres of wall: arc length and arc around.
-    vec2 chart = vec2(vSurface.x * 1000.0, vSurface.y * 25.0);
+    // Chart coordinates in millimetres.
+    vec3 chart = vSurface * 1000.0;
     vec3 toLight = uLightPosition - vWorld;
     float distance = max(length(toLight), 1e-4);
     vec3 L = toLight / distance;
@@ -120,10 +128,15 @@ void main()
     if (dot(N, L) < 0.0) {
         N = -N;
     }
-    // Normal perturbation from a height field (bump mapping by screen derivatives).
+    // Normal perturbation from a height field (bump mapping by screen
+    // derivatives). Detail finer than about two pixels is faded out, so
+    // that grazing walls do not alias into stripes.
+    float footprint = max(length(dFdx(chart)), length(dFdy(chart)));  // mm per pixel
+    float fine = 1.0 - smoothstep(0.15, 0.5, footprint);
+    float medium = 1.0 - smoothstep(0.6, 2.0, footprint);
     float lesion = vFinding.x;
-    float height = uBumpDepth * (0.6 * fbm(chart * 0.9) + 0.4 * noise(chart * 4.0)) +
-                   lesion * uBumpDepth * 2.0 * noise(chart * 6.0);
+    float height = uBumpDepth * (0.6 * medium * fbm(chart * 0.9) + 0.4 * fine * noise(chart * 4.0)) +
+                   lesion * uBumpDepth * 2.0 * medium * noise(chart * 6.0);
     vec3 dpdx = dFdx(vWorld);
     vec3 dpdy = dFdy(vWorld);
     float dhdx = dFdx(height);
@@ -137,9 +150,9 @@ void main()
     }
 
     // Mucosa: pink with a submucosal vessel network.
-    vec3 albedo = vec3(0.93, 0.50, 0.44) * (0.85 + 0.3 * fbm(chart * 0.25));
-    float vessel = vessels(chart * 0.22);
-    albedo = mix(albedo, vec3(0.62, 0.12, 0.12), 0.55 * vessel * (1.0 - lesion));
+    vec3 albedo = vec3(0.96, 0.46, 0.36) * (0.85 + 0.3 * fbm(chart * 0.25));
+    float vessel = vessels(chart * 0.15) * (1.0 - smoothstep(1.0, 3.0, footprint));
+    albedo = mix(albedo, vec3(0.60, 0.08, 0.10), 0.6 * vessel * (1.0 - lesion));
 
     // Lesions: 0 adenoma (redder, pit pattern), 1 serrated (pale, mucus cap), 2 cancer.
     int tissue = int(vFinding.y + 0.5);
@@ -150,7 +163,7 @@ void main()
     // Diverticulum: a dark pocket.
     albedo *= 1.0 - 0.75 * vFinding.w;
     // Residual stool: brown-yellow patches covering the given fraction.
-    float stoolMask = smoothstep(1.0 - vFinding.z, 1.0 - vFinding.z + 0.08, fbm(chart * 0.08 + vec2(31.0)));
+    float stoolMask = smoothstep(1.0 - vFinding.z, 1.0 - vFinding.z + 0.08, fbm(chart * 0.08 + vec3(31.0)));
     albedo = mix(albedo, vec3(0.55, 0.40, 0.12), stoolMask * step(0.001, vFinding.z));
 
     // Light at the tip: inverse-square fall-off and the light guide's cone.
@@ -160,7 +173,7 @@ void main()
     // Wet mucosa: a sharp specular lobe (light and eye coincide, so H = L),
     // stronger where mucus pools.
     float wet = uSpecular * (0.6 + 0.8 * noise(chart * 0.5)) * (1.0 - 0.7 * stoolMask);
-    float specular = wet * pow(max(dot(N, L), 0.0), 90.0);
+    float specular = wet * medium * pow(max(dot(N, L), 0.0), 90.0);
     vec3 colour = irradiance * (albedo * diffuse + vec3(specular));
     // Film response: soft shoulder instead of clipping.
     colour = vec3(1.0) - exp(-colour * 1.6);
@@ -194,7 +207,7 @@ void main()
     float radius = length(p);
     vec3 colour = texture(uScene, vUv).rgb;
     // Soiling: droplets and smears on the lens, which blur and veil the view.
-    float blobs = fbm(p * 3.0 + vec2(uSeed));
+    float blobs = fbm(vec3(p * 3.0, uSeed));
     float mask = clamp(smoothstep(0.55 - 0.5 * uSoiling, 0.75 - 0.5 * uSoiling, blobs) * 1.2, 0.0, 1.0) *
                  smoothstep(0.0, 0.15, uSoiling);
     if (mask > 0.0) {
@@ -209,7 +222,7 @@ void main()
         colour = mix(colour, veil, mask);
     }
     // Red-out: the lens against the mucosa sees only transmitted red light.
-    vec3 red = vec3(0.62, 0.06, 0.04) * (0.8 + 0.4 * fbm(p * 2.0 + vec2(7.0)));
+    vec3 red = vec3(0.62, 0.06, 0.04) * (0.8 + 0.4 * fbm(vec3(p * 2.0, 7.0)));
     colour = mix(colour, red, uRedOut);
     // The lens's image circle.
     colour *= 1.0 - smoothstep(0.985, 1.0, radius);

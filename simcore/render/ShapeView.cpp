@@ -43,7 +43,7 @@ void ShapeView::drawPolyline(const std::vector<Eigen::Vector2d>& points,
 {
     m_vertices.clear();
     const auto push = [&](const Eigen::Vector2d& p) {
-        m_vertices.push_back(static_cast<float>(p.x()));
+        m_vertices.push_back(static_cast<float>(p.x() / m_aspect));
         m_vertices.push_back(static_cast<float>(p.y()));
     };
     constexpr int kJoinSides = 12;
@@ -105,10 +105,13 @@ void ShapeView::render(const geometry::Centreline& colon, std::span<const Eigen:
         hi = hi.cwiseMax(p);
     }
     const Eigen::Vector3d centre = (lo + hi) / 2.0;
-    const double extent = (hi - lo).maxCoeff() * 1.1;
+    const Eigen::Vector3d extent = (hi - lo) * 1.1;
     const double aspect = static_cast<double>(width) / static_cast<double>(height);
-    // NDC units per metre: each panel is half the width.
-    const double scaleY = 2.0 / extent;
+    m_aspect = aspect;
+    // One scale (NDC y units per metre) for both panels, each half the
+    // image wide: the vertical extent fits the height, the larger of the
+    // two horizontal extents (x anterior view, y lateral) the panel width.
+    const double scaleY = std::min(2.0 / extent.z(), aspect / std::max(extent.x(), extent.y()));
     const double scaleX = scaleY / aspect;
     const std::array<Panel, 2> panels{{{0, 1.0, -1.0, 0.0}, {1, 1.0, 0.0, 1.0}}};
 
@@ -133,7 +136,7 @@ void ShapeView::render(const geometry::Centreline& colon, std::span<const Eigen:
         const double middle = (panel.left + panel.right) / 2.0;
         const auto project = [&](const Eigen::Vector3d& p) {
             const Eigen::Vector3d q = p - centre;
-            return Eigen::Vector2d(middle + panel.xSign * q[panel.xAxis] * scaleX, q.z() * scaleY);
+            return Eigen::Vector2d((middle + panel.xSign * q[panel.xAxis] * scaleX) * aspect, q.z() * scaleY);
         };
         std::vector<Eigen::Vector2d> path;
         std::vector<double> outer;
@@ -170,7 +173,7 @@ void ShapeView::render(const geometry::Centreline& colon, std::span<const Eigen:
         }
     }
     // Divider between the panels.
-    drawPolyline({Eigen::Vector2d(0.0, -1.0), Eigen::Vector2d(0.0, 1.0)}, {1.0 / width, 1.0 / width},
+    drawPolyline({Eigen::Vector2d(0.0, -1.0), Eigen::Vector2d(0.0, 1.0)}, {1.0 / height, 1.0 / height},
                  {0.4F, 0.4F, 0.45F, 1.0F});
     gl.BindVertexArray(0);
 }

@@ -45,6 +45,7 @@ private:
     GLuint m_vao = 0;
     GLuint m_buffer = 0;
     std::vector<float> m_vertices;
+    double m_aspect = 1.0;  ///< of the current target: polylines are built in NDC-y units
 };
 
 }  // namespace colonosim::render

@@ -68,7 +68,7 @@ WallSurface buildWallSurface(const geometry::TriangleMesh& visualRest, const geo
     WallSurface surface;
     surface.rest = visualRest;
     const int n = visualRest.numVertices();
-    surface.chart.resize(static_cast<size_t>(n) * 2);
+    surface.chart.resize(static_cast<size_t>(n) * 3);
     surface.finding.assign(static_cast<size_t>(n) * 4, 0.0F);
     surface.vertexSegment.resize(static_cast<size_t>(n));
 
@@ -111,8 +111,12 @@ WallSurface buildWallSurface(const geometry::TriangleMesh& visualRest, const geo
         const Eigen::Vector3d binormal = centreline.tangents[ks].cross(normal);
         const double theta = std::atan2(offset.dot(binormal), offset.dot(normal));
         const auto iu = static_cast<size_t>(i);
-        surface.chart[2 * iu] = static_cast<float>(centreline.arcLength[ks]);
-        surface.chart[2 * iu + 1] = static_cast<float>(centreline.radius[ks] * theta);
+        // Arc length continued along the tangent from the nearest sample,
+        // so that it is continuous between samples.
+        const double along = centreline.arcLength[ks] + offset.dot(centreline.tangents[ks]);
+        surface.chart[3 * iu] = static_cast<float>(along);
+        surface.chart[3 * iu + 1] = static_cast<float>(centreline.radius[ks] * std::cos(theta));
+        surface.chart[3 * iu + 2] = static_cast<float>(centreline.radius[ks] * std::sin(theta));
         surface.vertexSegment[iu] = centreline.segment[ks];
         surface.finding[4 * iu + 2] =
             static_cast<float>(findings.stoolFraction[static_cast<size_t>(centreline.segment[ks])]);

@@ -4,12 +4,14 @@
 /// findings and preparation, per visual vertex, fixed at load time.
 ///
 /// Chart: a centreline parameterisation. Each rest vertex v takes the arc
-/// length s of its nearest centreline sample and the clock angle
-/// theta = atan2((v - c).b, (v - c).n) in that sample's rotation-minimising
-/// frame (n, b = t x n), the frame ProceduralColon builds its rings in. On a
-/// tube-like colon this chart has no seams along its length and a single
-/// seam at theta = +-pi (the procedural textures use s and the arc r theta,
-/// so the seam shows only as a phase jump in noise).
+/// length s = s_k + (v - c_k).t_k from its nearest centreline sample k and
+/// the clock angle theta = atan2((v - c_k).b, (v - c_k).n) in that sample's
+/// rotation-minimising frame (n, b = t x n), the frame ProceduralColon
+/// builds its rings in. The chart is stored as the point of the straightened
+/// (unrolled-free) cylinder (s, r cos theta, r sin theta), r the centreline
+/// radius, and the procedural textures are 3D noise of it: no seam at
+/// theta = +-pi and no stretching around the circumference. Because the
+/// chart is fixed at rest, textures move with the tissue when it deforms.
 ///
 /// Findings are relief on the rest mesh, moved along the inward radial
 /// direction (towards the centreline) by a height profile h(d) of the
@@ -63,7 +65,7 @@ struct WallFindings {
 
 struct WallSurface {
     geometry::TriangleMesh rest;  ///< visual mesh at rest with the findings' relief
-    std::vector<float> chart;     ///< 2 per vertex: arc length (m), arc around r theta (m)
+    std::vector<float> chart;     ///< 3 per vertex: s, r cos(theta), r sin(theta) (m)
     std::vector<float> finding;   ///< 4 per vertex: lesion weight, tissue code, stool fraction, diverticulum
     std::vector<geometry::Segment> vertexSegment;
     std::vector<Eigen::Vector3d> lesionTops;  ///< rest position of each lesion's highest point

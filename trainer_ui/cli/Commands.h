@@ -14,5 +14,6 @@ int runBench(std::span<char* const> args);
 int runProcedure(std::span<char* const> args);
 int runRod(std::span<char* const> args);
 int runCase(std::span<char* const> args);
+int runRender(std::span<char* const> args);
 
 }  // namespace colonosim::cli
