@@ -50,12 +50,11 @@ EndoscopeView::EndoscopeView(const GlFunctions& gl, const WallSurface& surface,
     gl.EnableVertexAttribArray(0);
     gl.EnableVertexAttribArray(1);
 
-    std::vector<float> fixed(numVertices * 6);
+    std::vector<float> fixed(numVertices * 7);
     for (size_t i = 0; i < numVertices; ++i) {
-        std::copy_n(surface.chart.begin() + static_cast<long>(2 * i), 2,
-                    fixed.begin() + static_cast<long>(6 * i));
+        std::copy_n(surface.chart.begin() + static_cast<long>(3 * i), 3, fixed.begin() + static_cast<long>(7 * i));
         std::copy_n(surface.finding.begin() + static_cast<long>(4 * i), 4,
-                    fixed.begin() + static_cast<long>(6 * i + 2));
+                    fixed.begin() + static_cast<long>(7 * i + 3));
     }
     gl.GenBuffers(1, &m_staticBuffer);
     gl.BindBuffer(GL_ARRAY_BUFFER, m_staticBuffer);

@@ -98,10 +98,10 @@ float vessels(vec3 p)
 {
     vec3 q = p + 0.8 * vec3(fbm(p * 0.5), fbm(p * 0.5 + vec3(5.2, 1.3, 2.1)), fbm(p * 0.5 + vec3(1.7, 9.2, 4.4)));
     float v = abs(noise(q) - 0.5);
-    float large = 1.0 - smoothstep(0.025, 0.025 + 1.5 * fwidth(v), v);
+    float large = 1.0 - smoothstep(0.012, 0.012 + 1.5 * fwidth(v), v);
     float v2 = abs(noise(q * 2.3 + vec3(3.0)) - 0.5);
-    float small = 1.0 - smoothstep(0.018, 0.018 + 1.5 * fwidth(v2), v2);
-    return max(large, 0.6 * small);
+    float small = 1.0 - smoothstep(0.008, 0.008 + 1.5 * fwidth(v2), v2);
+    return max(large, 0.55 * small);
 }
 )";
 
@@ -135,7 +135,7 @@ void main()
     float fine = 1.0 - smoothstep(0.15, 0.5, footprint);
     float medium = 1.0 - smoothstep(0.6, 2.0, footprint);
     float lesion = vFinding.x;
-    float height = uBumpDepth * (0.6 * medium * fbm(chart * 0.9) + 0.4 * fine * noise(chart * 4.0)) +
+    float height = uBumpDepth * (0.8 * medium * fbm(chart * 0.9) + 0.2 * fine * noise(chart * 2.0)) +
                    lesion * uBumpDepth * 2.0 * medium * noise(chart * 6.0);
     vec3 dpdx = dFdx(vWorld);
     vec3 dpdy = dFdy(vWorld);
@@ -152,7 +152,7 @@ void main()
     // Mucosa: pink with a submucosal vessel network.
     vec3 albedo = vec3(0.96, 0.46, 0.36) * (0.85 + 0.3 * fbm(chart * 0.25));
     float vessel = vessels(chart * 0.15) * (1.0 - smoothstep(1.0, 3.0, footprint));
-    albedo = mix(albedo, vec3(0.60, 0.08, 0.10), 0.6 * vessel * (1.0 - lesion));
+    albedo = mix(albedo, vec3(0.62, 0.10, 0.12), 0.5 * vessel * (1.0 - lesion));
 
     // Lesions: 0 adenoma (redder, pit pattern), 1 serrated (pale, mucus cap), 2 cancer.
     int tissue = int(vFinding.y + 0.5);
