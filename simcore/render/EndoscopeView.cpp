@@ -52,7 +52,8 @@ EndoscopeView::EndoscopeView(const GlFunctions& gl, const WallSurface& surface,
 
     std::vector<float> fixed(numVertices * 7);
     for (size_t i = 0; i < numVertices; ++i) {
-        std::copy_n(surface.chart.begin() + static_cast<long>(3 * i), 3, fixed.begin() + static_cast<long>(7 * i));
+        std::copy_n(surface.chart.begin() + static_cast<long>(3 * i), 3,
+                    fixed.begin() + static_cast<long>(7 * i));
         std::copy_n(surface.finding.begin() + static_cast<long>(4 * i), 4,
                     fixed.begin() + static_cast<long>(7 * i + 3));
     }
