@@ -69,17 +69,24 @@ BENCHMARK(endoscopeFrame)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 void endoscopeFrameDrawOnly(benchmark::State& state)
 {
-    render::OffscreenContext context(kWidth, kHeight);
+    const int width = static_cast<int>(state.range(0));
+    const int height = static_cast<int>(state.range(1));
+    render::OffscreenContext context(width, height);
     const render::WallSurface surface =
         render::buildWallSurface(anatomy().visualMesh, anatomy().centreline, render::WallFindings{});
     render::EndoscopeView view(context.gl(), surface, render::RenderParameters{});
     const render::CameraPose pose = poseAlongColon(0.08);
     for (auto _ : state) {
-        view.render(pose, {}, kWidth, kHeight);
+        view.render(pose, {}, width, height);
         context.gl().Finish();
     }
 }
-BENCHMARK(endoscopeFrameDrawOnly)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(endoscopeFrameDrawOnly)
+    ->Args({kWidth, kHeight})
+    ->Args({320, 240})
+    ->Args({64, 48})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 void coverageUpdate(benchmark::State& state)
 {

@@ -31,7 +31,7 @@ EndoscopeView::EndoscopeView(const GlFunctions& gl, const WallSurface& surface,
     m_parameters.validate();
     m_wall = std::make_unique<ShaderProgram>(
         gl, std::initializer_list<const char*>{shaders::kFisheye, shaders::kWallVertex},
-        std::initializer_list<const char*>{shaders::kNoise, shaders::kWallFragment});
+        std::initializer_list<const char*>{shaders::kWallFragment});
     m_lens = std::make_unique<ShaderProgram>(
         gl, std::initializer_list<const char*>{shaders::kScreenVertex},
         std::initializer_list<const char*>{shaders::kNoise, shaders::kLensFragment});
@@ -74,12 +74,56 @@ EndoscopeView::EndoscopeView(const GlFunctions& gl, const WallSurface& surface,
                        {static_cast<GLuint>(t[0]), static_cast<GLuint>(t[1]), static_cast<GLuint>(t[2])});
     }
     m_numIndices = static_cast<GLsizei>(indices.size());
+    for (size_t first = 0; first < m_triangles.size(); first += kChunkTriangles) {
+        const size_t last = std::min(m_triangles.size(), first + kChunkTriangles);
+        Chunk chunk;
+        chunk.first = static_cast<GLsizei>(first * 3);
+        chunk.count = static_cast<GLsizei>((last - first) * 3);
+        for (size_t t = first; t < last; ++t) {
+            chunk.vertices.insert(chunk.vertices.end(), m_triangles[t].begin(), m_triangles[t].end());
+        }
+        std::sort(chunk.vertices.begin(), chunk.vertices.end());
+        chunk.vertices.erase(std::unique(chunk.vertices.begin(), chunk.vertices.end()), chunk.vertices.end());
+        m_chunks.push_back(std::move(chunk));
+    }
     gl.GenBuffers(1, &m_indexBuffer);
     gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, m_indexBuffer);
     gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indices.size() * sizeof(GLuint)),
                   indices.data(), GL_STATIC_DRAW);
     gl.BindVertexArray(0);
     setWallPositions(surface.rest.vertices);
+    bakeMucosa();
+}
+
+void EndoscopeView::bakeMucosa()
+{
+    constexpr int kSize = 1024;  // texels per 160 mm tile: 0.16 mm each
+    const GlFunctions& gl = m_gl;
+    const ShaderProgram bake(gl, {shaders::kScreenVertex}, {shaders::kPeriodicNoise, shaders::kMucosaBake});
+    gl.GenTextures(1, &m_mucosa);
+    gl.BindTexture(GL_TEXTURE_2D, m_mucosa);
+    gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, kSize, kSize, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    GLuint framebuffer = 0;
+    gl.GenFramebuffers(1, &framebuffer);
+    gl.BindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, m_mucosa, 0);
+    if (gl.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+        gl.DeleteFramebuffers(1, &framebuffer);
+        throw RenderError("the mucosa texture cannot be rendered to");
+    }
+    gl.Viewport(0, 0, kSize, kSize);
+    gl.Disable(GL_DEPTH_TEST);
+    bake.use();
+    gl.BindVertexArray(m_screenVao);
+    gl.DrawArrays(GL_TRIANGLES, 0, 3);
+    gl.BindVertexArray(0);
+    gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
+    gl.DeleteFramebuffers(1, &framebuffer);
+    gl.GenerateMipmap(GL_TEXTURE_2D);
 }
 
 EndoscopeView::~EndoscopeView()
@@ -89,6 +133,7 @@ EndoscopeView::~EndoscopeView()
     m_gl.DeleteBuffers(1, &m_indexBuffer);
     m_gl.DeleteVertexArrays(1, &m_vao);
     m_gl.DeleteVertexArrays(1, &m_screenVao);
+    m_gl.DeleteTextures(1, &m_mucosa);
     m_gl.DeleteFramebuffers(1, &m_targetFramebuffer);
     m_gl.DeleteTextures(1, &m_targetColour);
     m_gl.DeleteRenderbuffers(1, &m_targetDepth);
@@ -183,8 +228,48 @@ void EndoscopeView::render(const CameraPose& pose, const LensState& lens, int wi
     gl.Uniform1f(m_wall->uniform("uSpotExponent"), static_cast<float>(m_parameters.spotExponent));
     gl.Uniform1f(m_wall->uniform("uSpecular"), static_cast<float>(m_parameters.specular));
     gl.Uniform1f(m_wall->uniform("uBumpDepth"), static_cast<float>(m_parameters.bumpDepth));
+    gl.ActiveTexture(GL_TEXTURE1);
+    gl.BindTexture(GL_TEXTURE_2D, m_mucosa);
+    gl.Uniform1i(m_wall->uniform("uMucosa"), 1);
+    gl.ActiveTexture(GL_TEXTURE0);
     gl.BindVertexArray(m_vao);
-    gl.DrawElements(GL_TRIANGLES, m_numIndices, GL_UNSIGNED_INT, nullptr);
+    // Draw the chunks that may reach the image, merging neighbouring ones.
+    const double coneAngle = 1.5 * m_parameters.fieldOfView / 2.0;
+    GLsizei runFirst = 0;
+    GLsizei runCount = 0;
+    const auto flush = [&]() {
+        if (runCount > 0) {
+            gl.DrawElements(GL_TRIANGLES, runCount, GL_UNSIGNED_INT,
+                            reinterpret_cast<void*>(static_cast<size_t>(runFirst) * sizeof(GLuint)));
+        }
+        runCount = 0;
+    };
+    for (const Chunk& chunk : m_chunks) {
+        Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::max());
+        Eigen::Vector3d hi = -lo;
+        for (int v : chunk.vertices) {
+            lo = lo.cwiseMin(m_positions.col(v));
+            hi = hi.cwiseMax(m_positions.col(v));
+        }
+        const Eigen::Vector3d centre = (lo + hi) / 2.0;
+        const double radius = (hi - lo).norm() / 2.0;
+        const Eigen::Vector3d offset = centre - pose.position;
+        const double distance = offset.norm();
+        bool visible = distance - radius < m_parameters.farDistance;
+        if (visible && distance > radius) {
+            const double angle = std::acos(std::clamp(offset.dot(forward) / distance, -1.0, 1.0));
+            visible = angle - std::asin(radius / distance) < coneAngle;
+        }
+        if (!visible) {
+            flush();
+            continue;
+        }
+        if (runCount == 0) {
+            runFirst = chunk.first;
+        }
+        runCount += chunk.count;
+    }
+    flush();
     gl.Disable(GL_CLIP_DISTANCE0);
     gl.Disable(GL_DEPTH_TEST);
 

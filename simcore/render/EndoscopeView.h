@@ -3,6 +3,9 @@
 /// The endoscope view: the mapped wall seen through the tip's fisheye lens
 /// (Shaders.h), lit by the tip's light, then the lens pass.
 ///
+/// Pass 0, once: the procedural mucosa (vessel network, colour variation,
+///   stool pattern, relief) is baked into a tiling, mipmapped texture, so a
+///   frame costs texture reads instead of noise evaluations per pixel.
 /// Pass 1, into an offscreen colour + depth target: the wall with
 ///   irradiance E = I (1 cm / d)^2 cos(alpha)^k  (light at the lens, inverse
 ///   square, light-guide cone of exponent k at angle alpha off axis),
@@ -14,6 +17,11 @@
 ///   droplets whose extent grows with the soiling amount; under it the image
 ///   is blurred and veiled), red-out, and the black surround of the image
 ///   circle.
+/// Culling: the triangles are drawn in chunks of kChunkTriangles
+/// consecutive triangles (ring-ordered meshes make them compact); a chunk is
+/// skipped when its bounding sphere lies wholly beyond the far distance or
+/// wholly outside the cone of the clipped field (1.5 x half the field of
+/// view, as the clip distance).
 /// Red-out: amount = clamp((D_red - d) / (D_red - D_contact), 0, 1), d the
 /// distance from the lens to the nearest wall vertex ahead of it.
 
@@ -66,6 +74,7 @@ public:
 
 private:
     void resizeTarget(int width, int height);
+    void bakeMucosa();
 
     const GlFunctions& m_gl;
     RenderParameters m_parameters;
@@ -77,11 +86,19 @@ private:
     GLuint m_staticBuffer = 0;
     GLuint m_indexBuffer = 0;
     GLsizei m_numIndices = 0;
+    GLuint m_mucosa = 0;  ///< the baked, tiling mucosa texture (Shaders.h, kMucosaBake)
     GLuint m_targetFramebuffer = 0;
     GLuint m_targetColour = 0;
     GLuint m_targetDepth = 0;
     int m_targetWidth = 0;
     int m_targetHeight = 0;
+    static constexpr int kChunkTriangles = 2048;
+    struct Chunk {
+        std::vector<int> vertices;  ///< unique vertex indices of its triangles
+        GLsizei first = 0;          ///< first index in the index buffer
+        GLsizei count = 0;          ///< number of indices
+    };
+    std::vector<Chunk> m_chunks;
     std::vector<std::array<int, 3>> m_triangles;
     Eigen::Matrix3Xd m_positions;
     Eigen::Matrix3Xd m_normals;

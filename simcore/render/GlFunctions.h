@@ -85,7 +85,8 @@ using GetProcAddress = std::function<void*(const char* name)>;
     X(PFNGLTEXIMAGE2DPROC, TexImage2D)                                                                       \
     X(PFNGLTEXPARAMETERIPROC, TexParameteri)                                                                 \
     X(PFNGLDELETETEXTURESPROC, DeleteTextures)                                                               \
-    X(PFNGLACTIVETEXTUREPROC, ActiveTexture)
+    X(PFNGLACTIVETEXTUREPROC, ActiveTexture)                                                                 \
+    X(PFNGLGENERATEMIPMAPPROC, GenerateMipmap)
 
 /// The function-pointer table. Member names drop the "gl" prefix:
 /// gl.Clear(GL_COLOR_BUFFER_BIT).

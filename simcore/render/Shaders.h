@@ -92,16 +92,67 @@ float fbm(vec3 p)
     }
     return sum;
 }
-// Thin branching lines where warped noise crosses its mid level; the line
-// edge is widened by the pixel footprint (fwidth) so it does not alias.
-float vessels(vec3 p)
+)";
+
+/// Periodic 2D value noise for the baked mucosa texture: lattice indices
+/// wrap with `period` (doubling with each octave), so the texture tiles.
+inline constexpr const char* kPeriodicNoise = R"(
+float phash(vec2 i, vec2 period)
 {
-    vec3 q = p + 0.8 * vec3(fbm(p * 0.5), fbm(p * 0.5 + vec3(5.2, 1.3, 2.1)), fbm(p * 0.5 + vec3(1.7, 9.2, 4.4)));
-    float v = abs(noise(q) - 0.5);
-    float large = 1.0 - smoothstep(0.012, 0.012 + 1.5 * fwidth(v), v);
-    float v2 = abs(noise(q * 2.3 + vec3(3.0)) - 0.5);
-    float small = 1.0 - smoothstep(0.008, 0.008 + 1.5 * fwidth(v2), v2);
+    uvec2 q = uvec2(ivec2(mod(i, period)));
+    uint h = (q.x * 1597334673u) ^ (q.y * 3812015801u);
+    h = (h ^ (h >> 16u)) * 2246822519u;
+    h ^= h >> 13u;
+    return float(h) * (1.0 / 4294967295.0);
+}
+float pnoise(vec2 p, vec2 period)
+{
+    vec2 i = floor(p);
+    vec2 f = fract(p);
+    vec2 u = f * f * (3.0 - 2.0 * f);
+    return mix(mix(phash(i, period), phash(i + vec2(1.0, 0.0), period), u.x),
+               mix(phash(i + vec2(0.0, 1.0), period), phash(i + vec2(1.0, 1.0), period), u.x), u.y);
+}
+float pfbm(vec2 p, vec2 period)
+{
+    float sum = 0.0;
+    float amplitude = 0.5;
+    for (int k = 0; k < 4; ++k) {
+        sum += amplitude * pnoise(p, period);
+        p *= 2.0;
+        period *= 2.0;
+        amplitude *= 0.5;
+    }
+    return sum;
+}
+)";
+
+/// Bakes one tile of the mucosa (kTileMillimetres of arc length by one
+/// turn, written as kTileMillimetres of reference circumference) into RGBA:
+/// R vessel network, G albedo variation, B stool pattern, A relief (0..1).
+/// Every lattice scale is a whole number of cells per tile, so it repeats.
+inline constexpr const char* kMucosaBake = R"(
+in vec2 vUv;
+out vec4 fragColour;
+const float kTile = 160.0;  // mm
+float vesselLines(vec2 p, vec2 period)
+{
+    vec2 warp = vec2(pfbm(p * 0.5, period * 0.5), pfbm(p * 0.5 + vec2(5.0, 1.0), period * 0.5));
+    vec2 q = p + 1.6 * warp;
+    float v = abs(pnoise(q, period) - 0.5);
+    float v2 = abs(pnoise(q * 2.0 + vec2(3.0), period * 2.0) - 0.5);
+    float large = 1.0 - smoothstep(0.018, 0.035, v);
+    float small = 1.0 - smoothstep(0.010, 0.024, v2);
     return max(large, 0.55 * small);
+}
+void main()
+{
+    vec2 mm = vUv * kTile;
+    float vessel = vesselLines(mm * 0.15, vec2(24.0));
+    float variation = pfbm(mm * 0.25, vec2(40.0));
+    float stool = pfbm(mm * 0.075, vec2(12.0));
+    float relief = 0.9 * pfbm(mm * 0.9, vec2(144.0)) + 0.1 * pnoise(mm * 2.0, vec2(320.0));
+    fragColour = vec4(vessel, variation, stool, relief);
 }
 )";
 
@@ -111,16 +162,32 @@ in vec3 vNormal;
 in vec3 vSurface;
 in vec4 vFinding;
 out vec4 fragColour;
+uniform sampler2D uMucosa;
 uniform vec3 uLightPosition;
 uniform float uLightIntensity;      // irradiance scale at 1 cm
 uniform float uSpotExponent;
 uniform vec3 uViewAxis;
 uniform float uSpecular;
 uniform float uBumpDepth;           // m
+const float kTile = 160.0;          // mm, as in the bake
+// The baked tile at chart (s, angle), scaled by `zoom`. The angle's texture
+// coordinate is taken from whichever of atan's two branches is continuous
+// here (Tarini 2012), so mip selection sees no seam at +-pi.
+vec4 mucosa(vec3 chart, float zoom)
+{
+    float turn = atan(chart.z, chart.y) / 6.2831853;
+    vec2 a = vec2(chart.x / kTile, turn) * zoom;
+    vec2 b = vec2(a.x, fract(turn) * zoom);
+    vec2 dxa = dFdx(a), dya = dFdy(a), dxb = dFdx(b), dyb = dFdy(b);
+    bool useA = abs(dxa.y) + abs(dya.y) <= abs(dxb.y) + abs(dyb.y);
+    return texture(uMucosa, useA ? a : b);
+}
 void main()
 {
-    // Chart coordinates in millimetres.
-    vec3 chart = vSurface * 1000.0;
+    vec3 chart = vSurface * 1000.0;  // mm
+    vec4 m = mucosa(chart, 1.0);
+    float lesion = vFinding.x;
+    vec4 fineDetail = lesion > 0.0 ? mucosa(chart, 5.0) : vec4(0.5);
     vec3 toLight = uLightPosition - vWorld;
     float distance = max(length(toLight), 1e-4);
     vec3 L = toLight / distance;
@@ -128,15 +195,8 @@ void main()
     if (dot(N, L) < 0.0) {
         N = -N;
     }
-    // Normal perturbation from a height field (bump mapping by screen
-    // derivatives). Detail finer than about two pixels is faded out, so
-    // that grazing walls do not alias into stripes.
-    float footprint = max(length(dFdx(chart)), length(dFdy(chart)));  // mm per pixel
-    float fine = 1.0 - smoothstep(0.15, 0.5, footprint);
-    float medium = 1.0 - smoothstep(0.6, 2.0, footprint);
-    float lesion = vFinding.x;
-    float height = uBumpDepth * (0.8 * medium * fbm(chart * 0.9) + 0.2 * fine * noise(chart * 2.0)) +
-                   lesion * uBumpDepth * 2.0 * medium * noise(chart * 6.0);
+    // Normal perturbation from the baked relief (bump mapping by screen derivatives).
+    float height = uBumpDepth * (m.a + lesion * 2.0 * fineDetail.a);
     vec3 dpdx = dFdx(vWorld);
     vec3 dpdy = dFdy(vWorld);
     float dhdx = dFdx(height);
@@ -150,21 +210,20 @@ void main()
     }
 
     // Mucosa: pink with a submucosal vessel network.
-    vec3 albedo = vec3(0.96, 0.46, 0.36) * (0.85 + 0.3 * fbm(chart * 0.25));
-    float vessel = vessels(chart * 0.15) * (1.0 - smoothstep(1.0, 3.0, footprint));
-    albedo = mix(albedo, vec3(0.62, 0.10, 0.12), 0.5 * vessel * (1.0 - lesion));
+    vec3 albedo = vec3(0.96, 0.46, 0.36) * (0.85 + 0.3 * m.g);
+    albedo = mix(albedo, vec3(0.60, 0.08, 0.10), 0.55 * m.r * (1.0 - lesion));
 
     // Lesions: 0 adenoma (redder, pit pattern), 1 serrated (pale, mucus cap), 2 cancer.
     int tissue = int(vFinding.y + 0.5);
-    vec3 lesionColour = tissue == 0 ? vec3(0.86, 0.36, 0.32) * (0.8 + 0.4 * noise(chart * 5.0))
-                        : tissue == 1 ? vec3(0.90, 0.74, 0.58) * (0.85 + 0.3 * noise(chart * 3.0))
-                                      : vec3(0.55, 0.14, 0.16) * (0.6 + 0.8 * fbm(chart * 2.0));
+    vec3 lesionColour = tissue == 0 ? vec3(0.86, 0.36, 0.32) * (0.7 + 0.6 * fineDetail.g)
+                        : tissue == 1 ? vec3(0.90, 0.74, 0.58) * (0.85 + 0.3 * fineDetail.g)
+                                      : vec3(0.55, 0.14, 0.16) * (0.5 + 1.0 * fineDetail.b);
     albedo = mix(albedo, lesionColour, lesion);
     // Diverticulum: a dark pocket.
     albedo *= 1.0 - 0.75 * vFinding.w;
     // Residual stool: brown-yellow patches covering the given fraction.
-    float stoolMask = smoothstep(1.0 - vFinding.z, 1.0 - vFinding.z + 0.08, fbm(chart * 0.08 + vec3(31.0)));
-    albedo = mix(albedo, vec3(0.55, 0.40, 0.12), stoolMask * step(0.001, vFinding.z));
+    float stoolMask = smoothstep(1.0 - vFinding.z, 1.0 - vFinding.z + 0.08, m.b) * step(0.001, vFinding.z);
+    albedo = mix(albedo, vec3(0.55, 0.40, 0.12), stoolMask);
 
     // Light at the tip: inverse-square fall-off and the light guide's cone.
     float spot = pow(max(dot(-L, uViewAxis), 0.0), uSpotExponent);
@@ -172,8 +231,8 @@ void main()
     float diffuse = max(dot(N, L), 0.0);
     // Wet mucosa: a sharp specular lobe (light and eye coincide, so H = L),
     // stronger where mucus pools.
-    float wet = uSpecular * (0.6 + 0.8 * noise(chart * 0.5)) * (1.0 - 0.7 * stoolMask);
-    float specular = wet * medium * pow(max(dot(N, L), 0.0), 90.0);
+    float wet = uSpecular * (0.5 + m.g) * (1.0 - 0.7 * stoolMask);
+    float specular = wet * pow(max(dot(N, L), 0.0), 90.0);
     vec3 colour = irradiance * (albedo * diffuse + vec3(specular));
     // Film response: soft shoulder instead of clipping.
     colour = vec3(1.0) - exp(-colour * 1.6);
@@ -207,9 +266,12 @@ void main()
     float radius = length(p);
     vec3 colour = texture(uScene, vUv).rgb;
     // Soiling: droplets and smears on the lens, which blur and veil the view.
-    float blobs = fbm(vec3(p * 3.0, uSeed));
-    float mask = clamp(smoothstep(0.55 - 0.5 * uSoiling, 0.75 - 0.5 * uSoiling, blobs) * 1.2, 0.0, 1.0) *
-                 smoothstep(0.0, 0.15, uSoiling);
+    float mask = 0.0;
+    if (uSoiling > 0.0) {
+        float blobs = fbm(vec3(p * 3.0, uSeed));
+        mask = clamp(smoothstep(0.55 - 0.5 * uSoiling, 0.75 - 0.5 * uSoiling, blobs) * 1.2, 0.0, 1.0) *
+               smoothstep(0.0, 0.15, uSoiling);
+    }
     if (mask > 0.0) {
         vec3 blurred = vec3(0.0);
         for (int i = -3; i <= 3; ++i) {
@@ -222,8 +284,10 @@ void main()
         colour = mix(colour, veil, mask);
     }
     // Red-out: the lens against the mucosa sees only transmitted red light.
-    vec3 red = vec3(0.62, 0.06, 0.04) * (0.8 + 0.4 * fbm(vec3(p * 2.0, 7.0)));
-    colour = mix(colour, red, uRedOut);
+    if (uRedOut > 0.0) {
+        vec3 red = vec3(0.62, 0.06, 0.04) * (0.8 + 0.4 * fbm(vec3(p * 2.0, 7.0)));
+        colour = mix(colour, red, uRedOut);
+    }
     // The lens's image circle.
     colour *= 1.0 - smoothstep(0.985, 1.0, radius);
     fragColour = vec4(colour, 1.0);
