@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <ostream>
 #include <string>
 
 namespace {
@@ -15,10 +16,16 @@ namespace {
 using colonosim::testing::runColonosim;
 
 struct BadArguments {
+    const char* name;
     const char* arguments;
     const char* mentions;  ///< the message must name the field and range
     const char* range;
 };
+
+void PrintTo(const BadArguments& bad, std::ostream* out)
+{
+    *out << bad.name;
+}
 
 class RenderCliBadArguments : public ::testing::TestWithParam<BadArguments> {};
 
@@ -33,15 +40,20 @@ TEST_P(RenderCliBadArguments, ExitTwoNamingFieldValueAndRange)
 
 INSTANTIATE_TEST_SUITE_P(
     Table, RenderCliBadArguments,
-    ::testing::Values(BadArguments{"--default --size 10x10 --out v.png", "--size = 10x10", "[64, 4096]"},
-                      BadArguments{"--default --size wide --out v.png", "--size = wide", "[64, 4096]"},
-                      BadArguments{"--default --dials 200,0 --out v.png", "--dials = 200,0", "[-180, 180]"},
-                      BadArguments{"--default --insertion-mm 5000 --out v.png", "--insertion-mm", "1700"},
-                      BadArguments{"--default --rotation-deg nan --out v.png", "--rotation-deg", "720"},
-                      BadArguments{"--default --operator expert --contact-sheet s.png --frames 0", "--frames",
-                                   "64"},
-                      BadArguments{"--default", "--out", "--contact-sheet"},
-                      BadArguments{"--out v.png", "--default", "--case"}));
+    ::testing::Values(
+        BadArguments{"SizeTooSmall", "--default --size 10x10 --out v.png", "--size = 10x10", "[64, 4096]"},
+        BadArguments{"SizeNotWxH", "--default --size wide --out v.png", "--size = wide", "[64, 4096]"},
+        BadArguments{"DialBeyondRange", "--default --dials 200,0 --out v.png", "--dials = 200,0",
+                     "[-180, 180]"},
+        BadArguments{"InsertionBeyondRange", "--default --insertion-mm 5000 --out v.png", "--insertion-mm",
+                     "1700"},
+        BadArguments{"RotationNotANumber", "--default --rotation-deg nan --out v.png", "--rotation-deg",
+                     "720"},
+        BadArguments{"NoFrames", "--default --operator expert --contact-sheet s.png --frames 0", "--frames",
+                     "64"},
+        BadArguments{"NoOutput", "--default", "--out", "--contact-sheet"},
+        BadArguments{"NoColon", "--out v.png", "--default", "--case"}),
+    [](const ::testing::TestParamInfo<BadArguments>& info) { return std::string(info.param.name); });
 
 TEST(RenderCli, HelpExitsZero)
 {
