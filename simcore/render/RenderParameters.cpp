@@ -9,7 +9,7 @@ namespace colonosim::render {
 namespace {
 using R = RenderParameters;
 using params::Field;
-constexpr std::array<Field<R>, 13> kRenderFields{{
+constexpr std::array<Field<R>, 15> kRenderFields{{
     {&R::fieldOfViewSpec, &R::fieldOfView},
     {&R::lightIntensitySpec, &R::lightIntensity},
     {&R::spotExponentSpec, &R::spotExponent},
@@ -23,6 +23,8 @@ constexpr std::array<Field<R>, 13> kRenderFields{{
     {&R::maxIncidenceSpec, &R::maxIncidence},
     {&R::coverageIntervalSpec, &R::coverageInterval},
     {&R::coverageResolutionSpec, &R::coverageResolution},
+    {&R::soilingRateSpec, &R::soilingRate},
+    {&R::washRateSpec, &R::washRate},
 }};
 }  // namespace
 

@@ -112,6 +112,22 @@ struct RenderParameters {
                                                  "side of the square ID buffer of the coverage pass, pixels",
                                                  "model choice: a 1 cm^2 patch at 5 cm still covers pixels"};
 
+    static constexpr Spec soilingRateSpec{"soilingRate",
+                                          "1/s",
+                                          0.5,
+                                          0.0,
+                                          10.0,
+                                          "lens soiling gained per second while the lens touches the mucosa",
+                                          "model choice: a second of wall contact smears half the lens"};
+    static constexpr Spec washRateSpec{
+        "washRate",
+        "1/s",
+        3.0,
+        0.1,
+        50.0,
+        "decay rate of lens soiling while the water jet (lens wash) runs",
+        "model choice: a one-second lens wash clears about 95% of the soiling"};
+
     double fieldOfView = fieldOfViewSpec.defaultValue;
     double lightIntensity = lightIntensitySpec.defaultValue;
     double spotExponent = spotExponentSpec.defaultValue;
@@ -125,6 +141,8 @@ struct RenderParameters {
     double maxIncidence = maxIncidenceSpec.defaultValue;
     double coverageInterval = coverageIntervalSpec.defaultValue;
     double coverageResolution = coverageResolutionSpec.defaultValue;
+    double soilingRate = soilingRateSpec.defaultValue;
+    double washRate = washRateSpec.defaultValue;
 
     [[nodiscard]] static std::span<const params::Field<RenderParameters>> fields();
     /// Throws ParameterError naming the field, value and range; also when

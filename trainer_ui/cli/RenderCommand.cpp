@@ -16,6 +16,7 @@
 #include "simcore/procedure/Operator.h"
 #include "simcore/render/CoverageTracker.h"
 #include "simcore/render/EndoscopeView.h"
+#include "simcore/render/LensSoiling.h"
 #include "simcore/render/OffscreenContext.h"
 #include "simcore/render/ShapeView.h"
 #include "trainer_ui/cli/CommandLine.h"
@@ -151,8 +152,9 @@ struct Scene {
 int runRender(std::span<char* const> args)
 {
     const CommandLine line(args, {"--default", "--help"},
-                           {"--case", "--insertion-mm", "--rotation-deg", "--dials", "--out", "--shape-view",
-                            "--size", "--operator", "--contact-sheet", "--max-time", "--frames"});
+                           {"--case", "--insertion-mm", "--rotation-deg", "--dials", "--soiling", "--out",
+                            "--shape-view", "--size", "--operator", "--contact-sheet", "--max-time",
+                            "--frames"});
     if (line.has("--help")) {
         std::cout
             << "usage: colonosim render --default|--case FILE [--insertion-mm D] [--rotation-deg R]\n"
@@ -185,6 +187,7 @@ int runRender(std::span<char* const> args)
     const double rotation =
         line.number("--rotation-deg", 0.0, -720.0, 720.0, "deg") * std::numbers::pi / 180.0;
     const auto [dialUp, dialLeft] = parseDials(line.value("--dials"));
+    const double soiling = line.number("--soiling", 0.0, 0.0, 1.0, "");
     const double maxTime = line.number("--max-time", 60.0, 1.0, 3600.0, "s");
     const int frames = static_cast<int>(line.number("--frames", 12.0, 1.0, 64.0, ""));
     const ImageSize size = line.value("--size") ? parseSize(line.value("--size"))
@@ -227,10 +230,10 @@ int runRender(std::span<char* const> args)
     render::OffscreenContext context(size.width, size.height);
     render::RenderParameters parameters;
     render::EndoscopeView view(context.gl(), scene.surface, parameters);
-    const auto drawView = [&]() {
+    const auto drawView = [&](double lensSoiling) {
         scene.mapping.apply(loop.colon().body.positions(), scene.visual);
         view.setWallPositions(scene.visual);
-        view.render(poseOf(loop.outputs().tip), {}, size.width, size.height);
+        view.render(poseOf(loop.outputs().tip), {lensSoiling, 0.0}, size.width, size.height);
         return toQImage(context.readBack());
     };
 
@@ -246,7 +249,7 @@ int runRender(std::span<char* const> args)
             input.insertion = std::min(insertion, static_cast<double>(s) * kInsertSpeed * dt);
             loop.step(input);
         }
-        QImage image = drawView();
+        QImage image = drawView(soiling);
         save(image, *out);
         std::cout << "endoscope view: " << *out << " (" << size.width << "x" << size.height << "), insertion "
                   << insertion * 1000.0 << " mm, red-out " << view.redOut() << '\n';
@@ -281,12 +284,16 @@ int runRender(std::span<char* const> args)
     contact.fill(Qt::black);
     const double frameInterval = maxTime / frames;
     int taken = 0;
-    const auto steps = static_cast<long>(maxTime / loop.trace().loopStep);
+    render::LensSoiling lens(parameters);
+    const double dt = loop.trace().loopStep;
+    const auto steps = static_cast<long>(maxTime / dt);
     for (long s = 0; s < steps && !driver->finished(); ++s) {
         loop.step(driver->next(loop));
+        const procedure::ProcedureFrame& now = loop.lastFrame();
+        lens.update(dt, now.lensWallDistance, (now.input.buttons & procedure::kWater) != 0);
         coverage.update(loop.time(), loop.colon().body.positions(), poseOf(loop.outputs().tip));
         if (loop.time() + 1e-9 >= (taken + 1) * frameInterval && taken < frames) {
-            QImage frame = drawView();
+            QImage frame = drawView(lens.amount());
             std::ostringstream text;
             text.precision(3);
             text << "t " << loop.time() << " s  insertion " << loop.lastFrame().input.insertion * 100.0
