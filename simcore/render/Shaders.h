@@ -266,22 +266,42 @@ void main()
     float radius = length(p);
     vec3 colour = texture(uScene, vUv).rgb;
     // Soiling: droplets and smears on the lens, which blur and veil the view.
+    // Droplets: on a jittered grid at two scales, a cell holds a round drop
+    // when its random number is below the soiling amount; drops grow with
+    // it. A thin film veils the rest in proportion.
     float mask = 0.0;
     if (uSoiling > 0.0) {
-        float blobs = fbm(vec3(p * 3.0, uSeed));
-        mask = clamp(smoothstep(0.55 - 0.5 * uSoiling, 0.75 - 0.5 * uSoiling, blobs) * 1.2, 0.0, 1.0) *
-               smoothstep(0.0, 0.15, uSoiling);
-    }
-    if (mask > 0.0) {
-        vec3 blurred = vec3(0.0);
-        for (int i = -3; i <= 3; ++i) {
-            for (int j = -3; j <= 3; ++j) {
-                blurred += texture(uScene, vUv + vec2(float(i), float(j)) * uTexel * 3.0).rgb;
+        for (int level = 0; level < 2; ++level) {
+            float scale = level == 0 ? 4.0 : 9.0;
+            vec2 q = p * scale;
+            vec2 cell = floor(q);
+            for (int i = -1; i <= 1; ++i) {
+                for (int j = -1; j <= 1; ++j) {
+                    vec2 c = cell + vec2(float(i), float(j));
+                    float seed = uSeed + float(level) * 7.0;
+                    if (hash(vec3(c, seed)) < uSoiling) {
+                        vec2 centre = c + vec2(hash(vec3(c, seed + 1.0)), hash(vec3(c, seed + 2.0)));
+                        float radius = (0.3 + 0.5 * hash(vec3(c, seed + 3.0))) * (0.5 + 0.7 * uSoiling);
+                        float d = length(q - centre);
+                        mask = max(mask, 1.0 - smoothstep(0.75 * radius, radius, d));
+                    }
+                }
             }
         }
-        blurred /= 49.0;
-        vec3 veil = mix(blurred, vec3(0.62, 0.55, 0.38) * (0.4 + 0.6 * dot(blurred, vec3(0.33))) + 0.12, 0.45);
-        colour = mix(colour, veil, mask);
+        mask = max(mask, 0.35 * uSoiling);
+    }
+    if (mask > 0.0) {
+        // A 24-tap disc (three rings, rotated against each other) of radius 9 pixels.
+        vec3 blurred = texture(uScene, vUv).rgb;
+        for (int ring = 1; ring <= 3; ++ring) {
+            for (int k = 0; k < 8; ++k) {
+                float a = 0.785398 * (float(k) + 0.5 * float(ring));
+                blurred += texture(uScene, vUv + vec2(cos(a), sin(a)) * uTexel * 3.0 * float(ring)).rgb;
+            }
+        }
+        blurred /= 25.0;
+        vec3 veil = mix(blurred, vec3(0.62, 0.55, 0.38) * (0.3 + 0.7 * dot(blurred, vec3(0.33))) + 0.06, 0.3);
+        colour = mix(colour, veil, 0.9 * mask);
     }
     // Red-out: the lens against the mucosa sees only transmitted red light.
     if (uRedOut > 0.0) {

@@ -27,6 +27,7 @@
 #include <QImage>
 #include <QPainter>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -278,6 +279,14 @@ int runRender(std::span<char* const> args)
         triangleSegment.push_back(scene.anatomy.physicsNodes[static_cast<size_t>(t[0])].segment);
     }
     render::CoverageTracker coverage(context.gl(), scene.anatomy.physicsMesh, triangleSegment, parameters);
+    std::vector<std::vector<int>> lesionTriangles;
+    for (size_t l = 0; l < findings.lesions.size(); ++l) {
+        lesionTriangles.push_back(render::trianglesNear(scene.anatomy.physicsMesh,
+                                                        scene.surface.lesionTops[l],
+                                                        findings.lesions[l].diameter / 2.0 + 0.01));
+    }
+    coverage.setLesionTriangles(lesionTriangles);
+    std::vector<bool> lesionSeen(findings.lesions.size(), false);
     const int columns = std::min(frames, 4);
     const int rows = (frames + columns - 1) / columns;
     QImage contact(columns * size.width, rows * size.height, QImage::Format_RGBA8888);
@@ -291,7 +300,11 @@ int runRender(std::span<char* const> args)
         loop.step(driver->next(loop));
         const procedure::ProcedureFrame& now = loop.lastFrame();
         lens.update(dt, now.lensWallDistance, (now.input.buttons & procedure::kWater) != 0);
-        coverage.update(loop.time(), loop.colon().body.positions(), poseOf(loop.outputs().tip));
+        if (coverage.update(loop.time(), loop.colon().body.positions(), poseOf(loop.outputs().tip))) {
+            for (size_t l = 0; l < lesionSeen.size(); ++l) {
+                lesionSeen[l] = lesionSeen[l] || coverage.lesionsInView()[l];
+            }
+        }
         if (loop.time() + 1e-9 >= (taken + 1) * frameInterval && taken < frames) {
             QImage frame = drawView(lens.amount());
             std::ostringstream text;
@@ -312,7 +325,9 @@ int runRender(std::span<char* const> args)
         std::cout << (s == 0 ? " (" : ", ") << geometry::segmentName(segment) << ' '
                   << coverage.fractionSeen(segment) * 100.0 << '%';
     }
-    std::cout << ")\n";
+    std::cout << ")\nlesions in view at least once: "
+              << std::count(lesionSeen.begin(), lesionSeen.end(), true) << " of " << lesionSeen.size()
+              << '\n';
     return 0;
 }
 
