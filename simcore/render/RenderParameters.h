@@ -75,11 +75,12 @@ struct RenderParameters {
                                            "model choice (below the contact distance)"};
     static constexpr Spec farDistanceSpec{"farDistance",
                                           "m",
-                                          0.6,
+                                          0.3,
                                           0.05,
                                           5.0,
                                           "farthest depth drawn",
-                                          "model choice: beyond 60 cm the inverse-square light is black"};
+                                          "inverse-square light at the default exposure: wall beyond 30 cm "
+                                          "is below 2% of full scale"};
     static constexpr Spec workingDistanceSpec{
         "workingDistance",
         "m",
