@@ -140,9 +140,9 @@ float vesselLines(vec2 p, vec2 period)
     vec2 warp = vec2(pfbm(p * 0.5, period * 0.5), pfbm(p * 0.5 + vec2(5.0, 1.0), period * 0.5));
     vec2 q = p + 1.6 * warp;
     float v = abs(pnoise(q, period) - 0.5);
-    float v2 = abs(pnoise(q * 2.0 + vec2(3.0), period * 2.0) - 0.5);
-    float large = 1.0 - smoothstep(0.018, 0.035, v);
-    float small = 1.0 - smoothstep(0.010, 0.024, v2);
+    float v2 = abs(pnoise(q * 2.0 + vec2(3.0), period * 2.0) - 0.5) * 2.0;
+    float large = 1.0 - smoothstep(0.02 - fwidth(v), 0.02 + fwidth(v), v);
+    float small = 1.0 - smoothstep(0.022 - fwidth(v2), 0.022 + fwidth(v2), v2);
     return max(large, 0.55 * small);
 }
 void main()
@@ -170,17 +170,18 @@ uniform vec3 uViewAxis;
 uniform float uSpecular;
 uniform float uBumpDepth;           // m
 const float kTile = 160.0;          // mm, as in the bake
-// The baked tile at chart (s, angle), scaled by `zoom`. The angle's texture
-// coordinate is taken from whichever of atan's two branches is continuous
-// here (Tarini 2012), so mip selection sees no seam at +-pi.
+// The baked tile at chart (s, angle), scaled by `zoom`. atan's branch cut
+// at +-pi makes the angle jump by a whole turn between neighbouring pixels;
+// there the other branch, fract(turn), is continuous and is used instead
+// (Tarini 2012), so the implicit mip selection sees no seam. Away from the
+// cut both branches are equal up to rounding, so the first is kept unless
+// its screen derivative shows the jump (a quarter turn per pixel or more).
 vec4 mucosa(vec3 chart, float zoom)
 {
     float turn = atan(chart.z, chart.y) / 6.2831853;
-    vec2 a = vec2(chart.x / kTile, turn) * zoom;
-    vec2 b = vec2(a.x, fract(turn) * zoom);
-    vec2 dxa = dFdx(a), dya = dFdy(a), dxb = dFdx(b), dyb = dFdy(b);
-    bool useA = abs(dxa.y) + abs(dya.y) <= abs(dxb.y) + abs(dyb.y);
-    return texture(uMucosa, useA ? a : b);
+    float jump = abs(dFdx(turn)) + abs(dFdy(turn));
+    vec2 uv = vec2(chart.x / kTile, jump < 0.25 ? turn : fract(turn)) * zoom;
+    return texture(uMucosa, uv);
 }
 void main()
 {
@@ -195,6 +196,7 @@ void main()
     if (dot(N, L) < 0.0) {
         N = -N;
     }
+    vec3 smoothNormal = N;
     // Normal perturbation from the baked relief (bump mapping by screen derivatives).
     float height = uBumpDepth * (m.a + lesion * 2.0 * fineDetail.a);
     vec3 dpdx = dFdx(vWorld);
@@ -232,7 +234,9 @@ void main()
     // Wet mucosa: a sharp specular lobe (light and eye coincide, so H = L),
     // stronger where mucus pools.
     float wet = uSpecular * (0.5 + m.g) * (1.0 - 0.7 * stoolMask);
-    float specular = wet * pow(max(dot(N, L), 0.0), 90.0);
+    // The mucus film smooths the relief for the highlight (half the bump).
+    vec3 filmNormal = normalize(smoothNormal + N);
+    float specular = wet * pow(max(dot(filmNormal, L), 0.0), 90.0);
     vec3 colour = irradiance * (albedo * diffuse + vec3(specular));
     // Film response: soft shoulder instead of clipping.
     colour = vec3(1.0) - exp(-colour * 1.6);
