@@ -192,7 +192,8 @@ void main()
     vec3 toLight = uLightPosition - vWorld;
     float distance = max(length(toLight), 1e-4);
     vec3 L = toLight / distance;
-    vec3 N = normalize(vNormal);
+    // A vertex with no area around it has no normal: face the light.
+    vec3 N = dot(vNormal, vNormal) > 1e-12 ? normalize(vNormal) : L;
     if (dot(N, L) < 0.0) {
         N = -N;
     }
@@ -208,7 +209,10 @@ void main()
     float det = dot(dpdx, r1);
     if (abs(det) > 1e-20) {
         vec3 gradient = sign(det) * (dhdx * r1 + dhdy * r2);
-        N = normalize(abs(det) * N - gradient);
+        vec3 bumped = abs(det) * N - gradient;
+        // Steep relief (a lesion's edge seen from afar) must not turn the
+        // normal past the surface: keep the smooth one there.
+        N = dot(bumped, N) > 0.2 * length(bumped) ? normalize(bumped) : N;
     }
 
     // Mucosa: pink with a submucosal vessel network.
@@ -225,7 +229,7 @@ void main()
     albedo *= 1.0 - 0.75 * vFinding.w;
     // Residual stool: brown-yellow patches covering the given fraction.
     float stoolMask = smoothstep(1.0 - vFinding.z, 1.0 - vFinding.z + 0.08, m.b) * step(0.001, vFinding.z);
-    albedo = mix(albedo, vec3(0.55, 0.40, 0.12), stoolMask);
+    albedo = mix(albedo, vec3(0.58, 0.36, 0.12), stoolMask);
 
     // Light at the tip: inverse-square fall-off and the light guide's cone.
     float spot = pow(max(dot(-L, uViewAxis), 0.0), uSpotExponent);
