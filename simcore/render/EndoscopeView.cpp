@@ -35,6 +35,9 @@ EndoscopeView::EndoscopeView(const GlFunctions& gl, const WallSurface& surface,
     m_lens = std::make_unique<ShaderProgram>(
         gl, std::initializer_list<const char*>{shaders::kScreenVertex},
         std::initializer_list<const char*>{shaders::kNoise, shaders::kLensFragment});
+    m_cleanLens = std::make_unique<ShaderProgram>(
+        gl, std::initializer_list<const char*>{shaders::kScreenVertex},
+        std::initializer_list<const char*>{"#define LENS_CLEAN\n", shaders::kNoise, shaders::kLensFragment});
     const auto numVertices = static_cast<size_t>(surface.rest.numVertices());
     gl.GenVertexArrays(1, &m_vao);
     gl.GenVertexArrays(1, &m_screenVao);
@@ -234,7 +237,7 @@ void EndoscopeView::render(const CameraPose& pose, const LensState& lens, int wi
     gl.ActiveTexture(GL_TEXTURE0);
     gl.BindVertexArray(m_vao);
     // Draw the chunks that may reach the image, merging neighbouring ones.
-    const double coneAngle = 1.5 * m_parameters.fieldOfView / 2.0;
+    const double coneAngle = 1.05 * m_parameters.fieldOfView / 2.0;  // the clip distance of Shaders.h
     GLsizei runFirst = 0;
     GLsizei runCount = 0;
     const auto flush = [&]() {
@@ -275,16 +278,18 @@ void EndoscopeView::render(const CameraPose& pose, const LensState& lens, int wi
 
     gl.BindFramebuffer(GL_FRAMEBUFFER, framebuffer);
     gl.Viewport(0, 0, width, height);
-    m_lens->use();
+    const bool clean = lens.soiling <= 0.0 && m_redOut <= 0.0;
+    const ShaderProgram& lensPass = clean ? *m_cleanLens : *m_lens;
+    lensPass.use();
     gl.ActiveTexture(GL_TEXTURE0);
     gl.BindTexture(GL_TEXTURE_2D, m_targetColour);
-    gl.Uniform1i(m_lens->uniform("uScene"), 0);
-    gl.Uniform2f(m_lens->uniform("uTexel"), 1.0F / static_cast<float>(width),
+    gl.Uniform1i(lensPass.uniform("uScene"), 0);
+    gl.Uniform2f(lensPass.uniform("uTexel"), 1.0F / static_cast<float>(width),
                  1.0F / static_cast<float>(height));
-    gl.Uniform1f(m_lens->uniform("uAspect"), static_cast<float>(aspect));
-    gl.Uniform1f(m_lens->uniform("uSoiling"), static_cast<float>(std::clamp(lens.soiling, 0.0, 1.0)));
-    gl.Uniform1f(m_lens->uniform("uRedOut"), static_cast<float>(m_redOut));
-    gl.Uniform1f(m_lens->uniform("uSeed"), static_cast<float>(lens.soilingSeed));
+    gl.Uniform1f(lensPass.uniform("uAspect"), static_cast<float>(aspect));
+    gl.Uniform1f(lensPass.uniform("uSoiling"), static_cast<float>(std::clamp(lens.soiling, 0.0, 1.0)));
+    gl.Uniform1f(lensPass.uniform("uRedOut"), static_cast<float>(m_redOut));
+    gl.Uniform1f(lensPass.uniform("uSeed"), static_cast<float>(lens.soilingSeed));
     gl.BindVertexArray(m_screenVao);
     gl.DrawArrays(GL_TRIANGLES, 0, 3);
     gl.BindVertexArray(0);

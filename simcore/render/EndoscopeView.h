@@ -20,7 +20,7 @@
 /// Culling: the triangles are drawn in chunks of kChunkTriangles
 /// consecutive triangles (ring-ordered meshes make them compact); a chunk is
 /// skipped when its bounding sphere lies wholly beyond the far distance or
-/// wholly outside the cone of the clipped field (1.5 x half the field of
+/// wholly outside the cone of the clipped field (1.05 x half the field of
 /// view, as the clip distance).
 /// Red-out: amount = clamp((D_red - d) / (D_red - D_contact), 0, 1), d the
 /// distance from the lens to the nearest wall vertex ahead of it.
@@ -80,6 +80,7 @@ private:
     RenderParameters m_parameters;
     std::unique_ptr<ShaderProgram> m_wall;
     std::unique_ptr<ShaderProgram> m_lens;
+    std::unique_ptr<ShaderProgram> m_cleanLens;  ///< the lens pass without soiling and red-out
     GLuint m_vao = 0;
     GLuint m_screenVao = 0;
     GLuint m_dynamicBuffer = 0;

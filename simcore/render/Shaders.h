@@ -12,7 +12,11 @@
 /// projection is evaluated at the vertices only, so a triangle's edges stay
 /// straight in the image; with the visual mesh's 2-3 mm edges the error is a
 /// fraction of a pixel beyond a few centimetres. Points beyond the image
-/// circle are clipped (gl_ClipDistance) before they can wrap around.
+/// circle (5% margin) are clipped (gl_ClipDistance): nothing is shaded
+/// where the image is black, and nothing can wrap around behind the lens.
+/// A triangle whose vertices all lie outside while its middle is in view
+/// would be lost; with 2-3 mm edges that needs the lens within about
+/// 1.5 mm of it, where the view is red-out anyway.
 
 namespace colonosim::render::shaders {
 
@@ -33,7 +37,7 @@ vec4 fisheye(vec3 world, out vec3 cameraPoint)
     vec2 direction = rxy > 1e-12 ? c.xy / rxy : vec2(0.0);
     vec2 image = direction * theta / uHalfFieldOfView;
     image.x /= uAspect;
-    gl_ClipDistance[0] = uHalfFieldOfView * 1.5 - theta;
+    gl_ClipDistance[0] = uHalfFieldOfView * 1.05 - theta;
     float depth = (d - uDepthRange.x) / (uDepthRange.y - uDepthRange.x);
     return vec4(image, depth * 2.0 - 1.0, 1.0);
 }
@@ -248,7 +252,9 @@ void main()
 }
 )";
 
-/// Full-screen pass: lens soiling, red-out, image circle.
+/// Full-screen pass: lens soiling, red-out, image circle. Compiled a second
+/// time with LENS_CLEAN defined (image circle only) for frames that need
+/// neither effect: the software rasteriser would otherwise pay for them.
 inline constexpr const char* kScreenVertex = R"(
 out vec2 vUv;
 void main()
@@ -273,6 +279,7 @@ void main()
     vec2 p = vec2((vUv.x * 2.0 - 1.0) * uAspect, vUv.y * 2.0 - 1.0);
     float radius = length(p);
     vec3 colour = texture(uScene, vUv).rgb;
+#ifndef LENS_CLEAN
     // Soiling: droplets and smears on the lens, which blur and veil the view.
     // Droplets: on a jittered grid at two scales, a cell holds a round drop
     // when its random number is below the soiling amount; drops grow with
@@ -316,6 +323,7 @@ void main()
         vec3 red = vec3(0.62, 0.06, 0.04) * (0.8 + 0.4 * fbm(vec3(p * 2.0, 7.0)));
         colour = mix(colour, red, uRedOut);
     }
+#endif
     // The lens's image circle.
     colour *= 1.0 - smoothstep(0.985, 1.0, radius);
     fragColour = vec4(colour, 1.0);
