@@ -67,6 +67,29 @@ void endoscopeFrame(benchmark::State& state)
 }
 BENCHMARK(endoscopeFrame)->Unit(benchmark::kMillisecond)->UseRealTime();
 
+/// The CPU side of a frame: mapping, normals, upload.
+void wallUpdate(benchmark::State& state)
+{
+    render::OffscreenContext context(kWidth, kHeight);
+    const render::WallSurface surface =
+        render::buildWallSurface(anatomy().visualMesh, anatomy().centreline, render::WallFindings{});
+    const geometry::MeshMapping mapping(anatomy().physicsMesh, surface.rest.vertices);
+    render::EndoscopeView view(context.gl(), surface, render::RenderParameters{});
+    Eigen::Matrix3Xd physics = anatomy().physicsMesh.vertices;
+    physics.row(1).array() += 1e-3;
+    Eigen::Matrix3Xd visual;
+    const bool withMapping = state.range(0) != 0;
+    mapping.apply(physics, visual);
+    for (auto _ : state) {
+        if (withMapping) {
+            mapping.apply(physics, visual);
+        }
+        view.setWallPositions(visual);
+        context.gl().Finish();
+    }
+}
+BENCHMARK(wallUpdate)->ArgName("mapping")->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 void endoscopeFrameDrawOnly(benchmark::State& state)
 {
     const int width = static_cast<int>(state.range(0));
