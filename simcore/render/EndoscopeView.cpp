@@ -227,7 +227,14 @@ void EndoscopeView::render(const CameraPose& pose, const LensState& lens, int wi
     const Eigen::Vector3f axis = forward.cast<float>();
     gl.Uniform3f(m_wall->uniform("uLightPosition"), light.x(), light.y(), light.z());
     gl.Uniform3f(m_wall->uniform("uViewAxis"), axis.x(), axis.y(), axis.z());
-    gl.Uniform1f(m_wall->uniform("uLightIntensity"), static_cast<float>(m_parameters.lightIntensity));
+    // Automatic light control: a wall nearer than autoLightDistance would
+    // glare (inverse square), so the source is dimmed to keep it exposed.
+    double intensity = m_parameters.lightIntensity;
+    if (m_parameters.autoLightDistance > 0.0 && ahead < m_parameters.autoLightDistance) {
+        const double ratio = ahead / m_parameters.autoLightDistance;
+        intensity *= std::max(ratio * ratio, 0.02);
+    }
+    gl.Uniform1f(m_wall->uniform("uLightIntensity"), static_cast<float>(intensity));
     gl.Uniform1f(m_wall->uniform("uSpotExponent"), static_cast<float>(m_parameters.spotExponent));
     gl.Uniform1f(m_wall->uniform("uSpecular"), static_cast<float>(m_parameters.specular));
     gl.Uniform1f(m_wall->uniform("uBumpDepth"), static_cast<float>(m_parameters.bumpDepth));

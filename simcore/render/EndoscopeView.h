@@ -22,6 +22,9 @@
 /// skipped when its bounding sphere lies wholly beyond the far distance or
 /// wholly outside the cone of the clipped field (1.05 x half the field of
 /// view, as the clip distance).
+/// Automatic light control: with the nearest wall ahead at d below
+/// autoLightDistance D_a, the light is scaled by max((d / D_a)^2, 0.02), as a
+/// video processor's automatic brightness keeps a near wall from glaring.
 /// Red-out: amount = clamp((D_red - d) / (D_red - D_contact), 0, 1), d the
 /// distance from the lens to the nearest wall vertex ahead of it.
 

@@ -9,9 +9,10 @@ namespace colonosim::render {
 namespace {
 using R = RenderParameters;
 using params::Field;
-constexpr std::array<Field<R>, 15> kRenderFields{{
+constexpr std::array<Field<R>, 16> kRenderFields{{
     {&R::fieldOfViewSpec, &R::fieldOfView},
     {&R::lightIntensitySpec, &R::lightIntensity},
+    {&R::autoLightDistanceSpec, &R::autoLightDistance},
     {&R::spotExponentSpec, &R::spotExponent},
     {&R::specularSpec, &R::specular},
     {&R::bumpDepthSpec, &R::bumpDepth},

@@ -27,6 +27,15 @@ struct RenderParameters {
         20.0,
         "exposure: relative irradiance of a wall facing the tip at 1 cm",
         "model choice: a wall at 1-3 cm is well exposed, as on a video scope"};
+    static constexpr Spec autoLightDistanceSpec{
+        "autoLightDistance",
+        "m",
+        0.012,
+        0.0,
+        0.05,
+        "automatic light control: nearer than this, the light is dimmed as (d / this)^2 (0: off)",
+        "video processors' automatic brightness keeps a near wall from glaring; model choice of the "
+        "distance"};
     static constexpr Spec spotExponentSpec{
         "spotExponent",
         "1",
@@ -131,6 +140,7 @@ struct RenderParameters {
 
     double fieldOfView = fieldOfViewSpec.defaultValue;
     double lightIntensity = lightIntensitySpec.defaultValue;
+    double autoLightDistance = autoLightDistanceSpec.defaultValue;
     double spotExponent = spotExponentSpec.defaultValue;
     double specular = specularSpec.defaultValue;
     double bumpDepth = bumpDepthSpec.defaultValue;

@@ -315,7 +315,7 @@ void main()
             }
         }
         blurred /= 25.0;
-        vec3 veil = mix(blurred, vec3(0.62, 0.55, 0.38) * (0.3 + 0.7 * dot(blurred, vec3(0.33))) + 0.06, 0.3);
+        vec3 veil = mix(blurred, vec3(0.62, 0.55, 0.38) * 1.6 * dot(blurred, vec3(0.33)), 0.3);
         colour = mix(colour, veil, 0.9 * mask);
     }
     // Red-out: the lens against the mucosa sees only transmitted red light.
