@@ -160,12 +160,15 @@ void EndoscopeView::setWallPositions(const Eigen::Matrix3Xd& positions)
                        m_upload.data());
 }
 
-double EndoscopeView::wallDistanceAhead(const Eigen::Vector3d& point, const Eigen::Vector3d& forward) const
+double EndoscopeView::wallDistanceAhead(const Eigen::Vector3d& point, const Eigen::Vector3d& forward,
+                                        double coneAngle) const
 {
+    const double cosCone = std::cos(coneAngle);
     double best = std::numeric_limits<double>::infinity();
     for (Eigen::Index i = 0; i < m_positions.cols(); ++i) {
         const Eigen::Vector3d d = m_positions.col(i) - point;
-        if (d.dot(forward) > 0.0) {
+        const double along = d.dot(forward);
+        if (along > 0.0 && along >= cosCone * d.norm()) {
             best = std::min(best, d.squaredNorm());
         }
     }
@@ -230,8 +233,9 @@ void EndoscopeView::render(const CameraPose& pose, const LensState& lens, int wi
     // Automatic light control: a wall nearer than autoLightDistance would
     // glare (inverse square), so the source is dimmed to keep it exposed.
     double intensity = m_parameters.lightIntensity;
-    if (m_parameters.autoLightDistance > 0.0 && ahead < m_parameters.autoLightDistance) {
-        const double ratio = ahead / m_parameters.autoLightDistance;
+    const double metered = wallDistanceAhead(pose.position, forward, m_parameters.autoLightCone);
+    if (m_parameters.autoLightDistance > 0.0 && metered < m_parameters.autoLightDistance) {
+        const double ratio = metered / m_parameters.autoLightDistance;
         intensity *= std::max(ratio * ratio, 0.02);
     }
     gl.Uniform1f(m_wall->uniform("uLightIntensity"), static_cast<float>(intensity));

@@ -22,7 +22,8 @@
 /// skipped when its bounding sphere lies wholly beyond the far distance or
 /// wholly outside the cone of the clipped field (1.05 x half the field of
 /// view, as the clip distance).
-/// Automatic light control: with the nearest wall ahead at d below
+/// Automatic light control: with the nearest wall within autoLightCone of
+/// the view axis at d below
 /// autoLightDistance D_a, the light is scaled by max((d / D_a)^2, 0.02), as a
 /// video processor's automatic brightness keeps a near wall from glaring.
 /// Red-out: amount = clamp((D_red - d) / (D_red - D_contact), 0, 1), d the
@@ -66,10 +67,10 @@ public:
 
     /// Red-out amount (0..1) of the last render.
     [[nodiscard]] double redOut() const { return m_redOut; }
-    /// Distance from `point` to the nearest wall vertex in the half-space
-    /// ahead of it along `forward`, m (infinity when none).
-    [[nodiscard]] double wallDistanceAhead(const Eigen::Vector3d& point,
-                                           const Eigen::Vector3d& forward) const;
+    /// Distance from `point` to the nearest wall vertex within `coneAngle`
+    /// (rad) of `forward` (pi/2: the half-space ahead), m (infinity when none).
+    [[nodiscard]] double wallDistanceAhead(const Eigen::Vector3d& point, const Eigen::Vector3d& forward,
+                                           double coneAngle = 1.5707963267948966) const;
     [[nodiscard]] FisheyeLens lens(int width, int height) const
     {
         return {m_parameters.fieldOfView, width, height};

@@ -9,10 +9,11 @@ namespace colonosim::render {
 namespace {
 using R = RenderParameters;
 using params::Field;
-constexpr std::array<Field<R>, 16> kRenderFields{{
+constexpr std::array<Field<R>, 17> kRenderFields{{
     {&R::fieldOfViewSpec, &R::fieldOfView},
     {&R::lightIntensitySpec, &R::lightIntensity},
     {&R::autoLightDistanceSpec, &R::autoLightDistance},
+    {&R::autoLightConeSpec, &R::autoLightCone},
     {&R::spotExponentSpec, &R::spotExponent},
     {&R::specularSpec, &R::specular},
     {&R::bumpDepthSpec, &R::bumpDepth},

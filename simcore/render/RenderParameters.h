@@ -30,12 +30,20 @@ struct RenderParameters {
     static constexpr Spec autoLightDistanceSpec{
         "autoLightDistance",
         "m",
-        0.012,
+        0.025,
         0.0,
         0.05,
         "automatic light control: nearer than this, the light is dimmed as (d / this)^2 (0: off)",
         "video processors' automatic brightness keeps a near wall from glaring; model choice of the "
         "distance"};
+    static constexpr Spec autoLightConeSpec{
+        "autoLightCone",
+        "rad",
+        0.5236,
+        0.0175,
+        1.5708,
+        "automatic light control: half-angle about the view axis in which the nearest wall is measured",
+        "model choice: the middle of the image (30 deg) sets the exposure, as centre-weighted metering"};
     static constexpr Spec spotExponentSpec{
         "spotExponent",
         "1",
@@ -141,6 +149,7 @@ struct RenderParameters {
     double fieldOfView = fieldOfViewSpec.defaultValue;
     double lightIntensity = lightIntensitySpec.defaultValue;
     double autoLightDistance = autoLightDistanceSpec.defaultValue;
+    double autoLightCone = autoLightConeSpec.defaultValue;
     double spotExponent = spotExponentSpec.defaultValue;
     double specular = specularSpec.defaultValue;
     double bumpDepth = bumpDepthSpec.defaultValue;

@@ -60,7 +60,7 @@ TEST(EndoscopeView, LumenIsDarkAtTheCentreOfAStraightSegment)
     const double centre = ringMean(frame.image, 0.0, 0.12);
     const double wall = ringMean(frame.image, 0.55, 0.9);
     // The far lumen gets light only from beyond ~10 cm (inverse square):
-    // it must be much darker than the near wall, which must not be black.
+    // it must be much darker than the near wall, which must be clearly lit.
     EXPECT_GT(wall, 0.25);
     EXPECT_LT(centre, 0.25 * wall) << "centre " << centre << " wall " << wall;
     EXPECT_DOUBLE_EQ(frame.redOut, 0.0);
@@ -134,6 +134,33 @@ TEST(EndoscopeView, LesionAheadAppearsWhereTheLensProjectsIt)
     // And on the correct side of the image centre.
     EXPECT_EQ(sx / count > kWidth / 2.0, expected->x() > kWidth / 2.0);
     EXPECT_EQ(sy / count > kHeight / 2.0, expected->y() > kHeight / 2.0);
+}
+
+TEST(EndoscopeView, NearWallDoesNotGlare)
+{
+    // The lens 5 mm from the wall, looking at it: without the automatic light
+    // control the inverse-square light would saturate most of the view.
+    render::CameraPose pose;
+    pose.position = Eigen::Vector3d(kRadius - 0.005, 0.0, 0.15);
+    pose.rotation.col(2) = Eigen::Vector3d::UnitX();
+    pose.rotation.col(1) = Eigen::Vector3d::UnitZ();
+    pose.rotation.col(0) = pose.rotation.col(1).cross(pose.rotation.col(2));
+    const Frame frame = renderTube({}, pose);
+    colonosim::testing::saveArtefact(frame.image, "near_wall.png");
+    EXPECT_DOUBLE_EQ(frame.redOut, 0.0);
+    int saturated = 0;
+    int inCircle = 0;
+    for (int y = 0; y < kHeight; ++y) {
+        for (int x = 0; x < kWidth; ++x) {
+            if (std::hypot(x + 0.5 - kWidth / 2.0, y + 0.5 - kHeight / 2.0) < 0.9 * kHeight / 2.0) {
+                ++inCircle;
+                saturated += frame.image.at(x, y)[0] >= 250 ? 1 : 0;
+            }
+        }
+    }
+    EXPECT_LT(saturated, inCircle / 20) << saturated << " of " << inCircle << " pixels saturated";
+    // And the wall is still well lit where it faces the lens.
+    EXPECT_GT(luminance(frame.image, kWidth / 2, kHeight / 2), 0.2);
 }
 
 double gradientEnergy(const render::RgbaImage& image)
