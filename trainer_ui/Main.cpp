@@ -36,6 +36,8 @@ void printUsage()
            "  report      report --user NAME --format pdf|csv|xapi --out FILE; report verify FILE\n"
            "  backup      online backup of the records: backup --out FILE\n"
            "  benchmarks  benchmark sets from expert sessions: benchmarks derive|show --name SET\n"
+           "  render      endoscope and scope-shape views as PNG: render --default|--case FILE --out "
+           "view.png\n"
            "Records: run ... --user NAME [--db FILE] stores and scores a session.\n";
 }
 }  // namespace
@@ -86,6 +88,9 @@ int main(int argc, char** argv)
         }
         if (command == "benchmarks") {
             return cli::runBenchmarks(rest);
+        }
+        if (command == "render") {
+            return cli::runRender(rest);
         }
         std::cerr << "colonosim: unknown subcommand \"" << command << "\" (see colonosim --help)\n";
         return 2;

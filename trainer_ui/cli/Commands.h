@@ -19,5 +19,6 @@ int runProgress(std::span<char* const> args);
 int runReport(std::span<char* const> args);
 int runBackup(std::span<char* const> args);
 int runBenchmarks(std::span<char* const> args);
+int runRender(std::span<char* const> args);
 
 }  // namespace colonosim::cli

@@ -1,0 +1,309 @@
+#include "simcore/render/EndoscopeView.h"
+
+#include "simcore/geometry/MeshMapping.h"
+#include "simcore/render/Shaders.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace colonosim::render {
+
+namespace {
+void setCamera(const GlFunctions& gl, const ShaderProgram& program, const CameraPose& pose,
+               double fieldOfView, double aspect, double nearDistance, double farDistance)
+{
+    const Eigen::Matrix3f w = worldToCamera(pose).cast<float>();
+    gl.UniformMatrix3fv(program.uniform("uWorldToCamera"), 1, GL_FALSE, w.data());  // column-major
+    const Eigen::Vector3f p = pose.position.cast<float>();
+    gl.Uniform3f(program.uniform("uCameraPosition"), p.x(), p.y(), p.z());
+    gl.Uniform1f(program.uniform("uHalfFieldOfView"), static_cast<float>(fieldOfView / 2.0));
+    gl.Uniform1f(program.uniform("uAspect"), static_cast<float>(aspect));
+    gl.Uniform2f(program.uniform("uDepthRange"), static_cast<float>(nearDistance),
+                 static_cast<float>(farDistance));
+}
+}  // namespace
+
+EndoscopeView::EndoscopeView(const GlFunctions& gl, const WallSurface& surface,
+                             const RenderParameters& parameters)
+    : m_gl(gl), m_parameters(parameters), m_triangles(surface.rest.triangles)
+{
+    m_parameters.validate();
+    m_wall = std::make_unique<ShaderProgram>(
+        gl, std::initializer_list<const char*>{shaders::kFisheye, shaders::kWallVertex},
+        std::initializer_list<const char*>{shaders::kWallFragment});
+    m_lens = std::make_unique<ShaderProgram>(
+        gl, std::initializer_list<const char*>{shaders::kScreenVertex},
+        std::initializer_list<const char*>{shaders::kNoise, shaders::kLensFragment});
+    m_cleanLens = std::make_unique<ShaderProgram>(
+        gl, std::initializer_list<const char*>{shaders::kScreenVertex},
+        std::initializer_list<const char*>{"#define LENS_CLEAN\n", shaders::kNoise, shaders::kLensFragment});
+    const auto numVertices = static_cast<size_t>(surface.rest.numVertices());
+    gl.GenVertexArrays(1, &m_vao);
+    gl.GenVertexArrays(1, &m_screenVao);
+    gl.BindVertexArray(m_vao);
+
+    gl.GenBuffers(1, &m_dynamicBuffer);
+    gl.BindBuffer(GL_ARRAY_BUFFER, m_dynamicBuffer);
+    gl.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(numVertices * 6 * sizeof(float)), nullptr,
+                  GL_STREAM_DRAW);
+    gl.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float), nullptr);
+    gl.VertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 6 * sizeof(float),
+                           reinterpret_cast<void*>(3 * sizeof(float)));
+    gl.EnableVertexAttribArray(0);
+    gl.EnableVertexAttribArray(1);
+
+    std::vector<float> fixed(numVertices * 7);
+    for (size_t i = 0; i < numVertices; ++i) {
+        std::copy_n(surface.chart.begin() + static_cast<long>(3 * i), 3,
+                    fixed.begin() + static_cast<long>(7 * i));
+        std::copy_n(surface.finding.begin() + static_cast<long>(4 * i), 4,
+                    fixed.begin() + static_cast<long>(7 * i + 3));
+    }
+    gl.GenBuffers(1, &m_staticBuffer);
+    gl.BindBuffer(GL_ARRAY_BUFFER, m_staticBuffer);
+    gl.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(fixed.size() * sizeof(float)), fixed.data(),
+                  GL_STATIC_DRAW);
+    gl.VertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, 7 * sizeof(float), nullptr);
+    gl.VertexAttribPointer(3, 4, GL_FLOAT, GL_FALSE, 7 * sizeof(float),
+                           reinterpret_cast<void*>(3 * sizeof(float)));
+    gl.EnableVertexAttribArray(2);
+    gl.EnableVertexAttribArray(3);
+
+    std::vector<GLuint> indices;
+    indices.reserve(m_triangles.size() * 3);
+    for (const auto& t : m_triangles) {
+        indices.insert(indices.end(),
+                       {static_cast<GLuint>(t[0]), static_cast<GLuint>(t[1]), static_cast<GLuint>(t[2])});
+    }
+    m_numIndices = static_cast<GLsizei>(indices.size());
+    for (size_t first = 0; first < m_triangles.size(); first += kChunkTriangles) {
+        const size_t last = std::min(m_triangles.size(), first + kChunkTriangles);
+        Chunk chunk;
+        chunk.first = static_cast<GLsizei>(first * 3);
+        chunk.count = static_cast<GLsizei>((last - first) * 3);
+        for (size_t t = first; t < last; ++t) {
+            chunk.vertices.insert(chunk.vertices.end(), m_triangles[t].begin(), m_triangles[t].end());
+        }
+        std::sort(chunk.vertices.begin(), chunk.vertices.end());
+        chunk.vertices.erase(std::unique(chunk.vertices.begin(), chunk.vertices.end()), chunk.vertices.end());
+        m_chunks.push_back(std::move(chunk));
+    }
+    gl.GenBuffers(1, &m_indexBuffer);
+    gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, m_indexBuffer);
+    gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indices.size() * sizeof(GLuint)),
+                  indices.data(), GL_STATIC_DRAW);
+    gl.BindVertexArray(0);
+    setWallPositions(surface.rest.vertices);
+    bakeMucosa();
+}
+
+void EndoscopeView::bakeMucosa()
+{
+    constexpr int kSize = 1024;  // texels per 160 mm tile: 0.16 mm each
+    const GlFunctions& gl = m_gl;
+    const ShaderProgram bake(gl, {shaders::kScreenVertex}, {shaders::kPeriodicNoise, shaders::kMucosaBake});
+    gl.GenTextures(1, &m_mucosa);
+    gl.BindTexture(GL_TEXTURE_2D, m_mucosa);
+    gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, kSize, kSize, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    GLuint framebuffer = 0;
+    gl.GenFramebuffers(1, &framebuffer);
+    gl.BindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, m_mucosa, 0);
+    if (gl.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+        gl.DeleteFramebuffers(1, &framebuffer);
+        throw RenderError("the mucosa texture cannot be rendered to");
+    }
+    gl.Viewport(0, 0, kSize, kSize);
+    gl.Disable(GL_DEPTH_TEST);
+    bake.use();
+    gl.BindVertexArray(m_screenVao);
+    gl.DrawArrays(GL_TRIANGLES, 0, 3);
+    gl.BindVertexArray(0);
+    gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
+    gl.DeleteFramebuffers(1, &framebuffer);
+    gl.GenerateMipmap(GL_TEXTURE_2D);
+}
+
+EndoscopeView::~EndoscopeView()
+{
+    m_gl.DeleteBuffers(1, &m_dynamicBuffer);
+    m_gl.DeleteBuffers(1, &m_staticBuffer);
+    m_gl.DeleteBuffers(1, &m_indexBuffer);
+    m_gl.DeleteVertexArrays(1, &m_vao);
+    m_gl.DeleteVertexArrays(1, &m_screenVao);
+    m_gl.DeleteTextures(1, &m_mucosa);
+    m_gl.DeleteFramebuffers(1, &m_targetFramebuffer);
+    m_gl.DeleteTextures(1, &m_targetColour);
+    m_gl.DeleteRenderbuffers(1, &m_targetDepth);
+}
+
+void EndoscopeView::setWallPositions(const Eigen::Matrix3Xd& positions)
+{
+    m_positions = positions;
+    geometry::MeshMapping::computeVertexNormals(positions, m_triangles, m_normals);
+    const auto n = static_cast<size_t>(positions.cols());
+    m_upload.resize(n * 6);
+    for (size_t i = 0; i < n; ++i) {
+        const auto col = static_cast<Eigen::Index>(i);
+        for (int k = 0; k < 3; ++k) {
+            m_upload[6 * i + static_cast<size_t>(k)] = static_cast<float>(positions(k, col));
+            m_upload[6 * i + 3 + static_cast<size_t>(k)] = static_cast<float>(m_normals(k, col));
+        }
+    }
+    m_gl.BindBuffer(GL_ARRAY_BUFFER, m_dynamicBuffer);
+    m_gl.BufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(m_upload.size() * sizeof(float)),
+                       m_upload.data());
+}
+
+double EndoscopeView::wallDistanceAhead(const Eigen::Vector3d& point, const Eigen::Vector3d& forward,
+                                        double coneAngle) const
+{
+    const double cosCone = std::cos(coneAngle);
+    double best = std::numeric_limits<double>::infinity();
+    for (Eigen::Index i = 0; i < m_positions.cols(); ++i) {
+        const Eigen::Vector3d d = m_positions.col(i) - point;
+        const double along = d.dot(forward);
+        if (along > 0.0 && along >= cosCone * d.norm()) {
+            best = std::min(best, d.squaredNorm());
+        }
+    }
+    return std::sqrt(best);
+}
+
+void EndoscopeView::resizeTarget(int width, int height)
+{
+    if (width == m_targetWidth && height == m_targetHeight) {
+        return;
+    }
+    const GlFunctions& gl = m_gl;
+    if (m_targetFramebuffer == 0) {
+        gl.GenFramebuffers(1, &m_targetFramebuffer);
+        gl.GenTextures(1, &m_targetColour);
+        gl.GenRenderbuffers(1, &m_targetDepth);
+    }
+    gl.BindTexture(GL_TEXTURE_2D, m_targetColour);
+    gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    gl.BindRenderbuffer(GL_RENDERBUFFER, m_targetDepth);
+    gl.RenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
+    gl.BindFramebuffer(GL_FRAMEBUFFER, m_targetFramebuffer);
+    gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, m_targetColour, 0);
+    gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, m_targetDepth);
+    if (gl.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+        throw RenderError("the endoscope view's offscreen target is incomplete");
+    }
+    m_targetWidth = width;
+    m_targetHeight = height;
+}
+
+void EndoscopeView::render(const CameraPose& pose, const LensState& lens, int width, int height,
+                           GLuint framebuffer)
+{
+    const GlFunctions& gl = m_gl;
+    resizeTarget(width, height);
+    const double aspect = static_cast<double>(width) / static_cast<double>(height);
+    const Eigen::Vector3d forward = pose.rotation.col(2);
+    const double ahead = wallDistanceAhead(pose.position, forward);
+    m_redOut = std::clamp((m_parameters.redOutDistance - ahead) /
+                              (m_parameters.redOutDistance - m_parameters.contactDistance),
+                          0.0, 1.0);
+
+    gl.BindFramebuffer(GL_FRAMEBUFFER, m_targetFramebuffer);
+    gl.Viewport(0, 0, width, height);
+    gl.ClearColor(0.0F, 0.0F, 0.0F, 1.0F);
+    gl.Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    gl.Enable(GL_DEPTH_TEST);
+    gl.DepthFunc(GL_LESS);
+    gl.Enable(GL_CLIP_DISTANCE0);
+    m_wall->use();
+    setCamera(gl, *m_wall, pose, m_parameters.fieldOfView, aspect, m_parameters.nearDistance,
+              m_parameters.farDistance);
+    const Eigen::Vector3f light = pose.position.cast<float>();
+    const Eigen::Vector3f axis = forward.cast<float>();
+    gl.Uniform3f(m_wall->uniform("uLightPosition"), light.x(), light.y(), light.z());
+    gl.Uniform3f(m_wall->uniform("uViewAxis"), axis.x(), axis.y(), axis.z());
+    // Automatic light control: a wall nearer than autoLightDistance would
+    // glare (inverse square), so the source is dimmed to keep it exposed.
+    double intensity = m_parameters.lightIntensity;
+    const double metered = wallDistanceAhead(pose.position, forward, m_parameters.autoLightCone);
+    if (m_parameters.autoLightDistance > 0.0 && metered < m_parameters.autoLightDistance) {
+        const double ratio = metered / m_parameters.autoLightDistance;
+        intensity *= std::max(ratio * ratio, 0.02);
+    }
+    gl.Uniform1f(m_wall->uniform("uLightIntensity"), static_cast<float>(intensity));
+    gl.Uniform1f(m_wall->uniform("uSpotExponent"), static_cast<float>(m_parameters.spotExponent));
+    gl.Uniform1f(m_wall->uniform("uSpecular"), static_cast<float>(m_parameters.specular));
+    gl.Uniform1f(m_wall->uniform("uBumpDepth"), static_cast<float>(m_parameters.bumpDepth));
+    gl.ActiveTexture(GL_TEXTURE1);
+    gl.BindTexture(GL_TEXTURE_2D, m_mucosa);
+    gl.Uniform1i(m_wall->uniform("uMucosa"), 1);
+    gl.ActiveTexture(GL_TEXTURE0);
+    gl.BindVertexArray(m_vao);
+    // Draw the chunks that may reach the image, merging neighbouring ones.
+    const double coneAngle = 1.05 * m_parameters.fieldOfView / 2.0;  // the clip distance of Shaders.h
+    GLsizei runFirst = 0;
+    GLsizei runCount = 0;
+    const auto flush = [&]() {
+        if (runCount > 0) {
+            gl.DrawElements(GL_TRIANGLES, runCount, GL_UNSIGNED_INT,
+                            reinterpret_cast<void*>(static_cast<size_t>(runFirst) * sizeof(GLuint)));
+        }
+        runCount = 0;
+    };
+    for (const Chunk& chunk : m_chunks) {
+        Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::max());
+        Eigen::Vector3d hi = -lo;
+        for (int v : chunk.vertices) {
+            lo = lo.cwiseMin(m_positions.col(v));
+            hi = hi.cwiseMax(m_positions.col(v));
+        }
+        const Eigen::Vector3d centre = (lo + hi) / 2.0;
+        const double radius = (hi - lo).norm() / 2.0;
+        const Eigen::Vector3d offset = centre - pose.position;
+        const double distance = offset.norm();
+        bool visible = distance - radius < m_parameters.farDistance;
+        if (visible && distance > radius) {
+            const double angle = std::acos(std::clamp(offset.dot(forward) / distance, -1.0, 1.0));
+            visible = angle - std::asin(radius / distance) < coneAngle;
+        }
+        if (!visible) {
+            flush();
+            continue;
+        }
+        if (runCount == 0) {
+            runFirst = chunk.first;
+        }
+        runCount += chunk.count;
+    }
+    flush();
+    gl.Disable(GL_CLIP_DISTANCE0);
+    gl.Disable(GL_DEPTH_TEST);
+
+    gl.BindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    gl.Viewport(0, 0, width, height);
+    const bool clean = lens.soiling <= 0.0 && m_redOut <= 0.0;
+    const ShaderProgram& lensPass = clean ? *m_cleanLens : *m_lens;
+    lensPass.use();
+    gl.ActiveTexture(GL_TEXTURE0);
+    gl.BindTexture(GL_TEXTURE_2D, m_targetColour);
+    gl.Uniform1i(lensPass.uniform("uScene"), 0);
+    gl.Uniform2f(lensPass.uniform("uTexel"), 1.0F / static_cast<float>(width),
+                 1.0F / static_cast<float>(height));
+    gl.Uniform1f(lensPass.uniform("uAspect"), static_cast<float>(aspect));
+    gl.Uniform1f(lensPass.uniform("uSoiling"), static_cast<float>(std::clamp(lens.soiling, 0.0, 1.0)));
+    gl.Uniform1f(lensPass.uniform("uRedOut"), static_cast<float>(m_redOut));
+    gl.Uniform1f(lensPass.uniform("uSeed"), static_cast<float>(lens.soilingSeed));
+    gl.BindVertexArray(m_screenVao);
+    gl.DrawArrays(GL_TRIANGLES, 0, 3);
+    gl.BindVertexArray(0);
+}
+
+}  // namespace colonosim::render

@@ -1,0 +1,114 @@
+#pragma once
+/// \file
+/// The endoscope view: the mapped wall seen through the tip's fisheye lens
+/// (Shaders.h), lit by the tip's light, then the lens pass.
+///
+/// Pass 0, once: the procedural mucosa (vessel network, colour variation,
+///   stool pattern, relief) is baked into a tiling, mipmapped texture, so a
+///   frame costs texture reads instead of noise evaluations per pixel.
+/// Pass 1, into an offscreen colour + depth target: the wall with
+///   irradiance E = I (1 cm / d)^2 cos(alpha)^k  (light at the lens, inverse
+///   square, light-guide cone of exponent k at angle alpha off axis),
+///   Lambert diffuse on a procedural albedo (vessel network, noise, lesion
+///   colour, stool) with the normal perturbed by a procedural height field
+///   (bump mapping by screen-space derivatives), and a sharp Blinn-Phong
+///   lobe for the wet mucosa (light and eye coincide, so H = L).
+/// Pass 2, to the host's framebuffer: lens soiling (a screen-space mask of
+///   droplets whose extent grows with the soiling amount; under it the image
+///   is blurred and veiled), red-out, and the black surround of the image
+///   circle.
+/// Culling: the triangles are drawn in chunks of kChunkTriangles
+/// consecutive triangles (ring-ordered meshes make them compact); a chunk is
+/// skipped when its bounding sphere lies wholly beyond the far distance or
+/// wholly outside the cone of the clipped field (1.05 x half the field of
+/// view, as the clip distance).
+/// Automatic light control: with the nearest wall within autoLightCone of
+/// the view axis at d below
+/// autoLightDistance D_a, the light is scaled by max((d / D_a)^2, 0.02), as a
+/// video processor's automatic brightness keeps a near wall from glaring.
+/// Red-out: amount = clamp((D_red - d) / (D_red - D_contact), 0, 1), d the
+/// distance from the lens to the nearest wall vertex ahead of it.
+
+#include "simcore/render/FisheyeLens.h"
+#include "simcore/render/GlFunctions.h"
+#include "simcore/render/RenderParameters.h"
+#include "simcore/render/ShaderProgram.h"
+#include "simcore/render/WallSurface.h"
+
+#include <Eigen/Core>
+
+#include <memory>
+
+namespace colonosim::render {
+
+/// What the lens itself adds to the picture.
+struct LensState {
+    double soiling = 0.0;      ///< 0 clean .. 1 covered (lens wash brings it to 0)
+    double soilingSeed = 0.0;  ///< moves the droplet pattern
+};
+
+class EndoscopeView {
+public:
+    /// Needs a current context whose functions are `gl`. Throws RenderError
+    /// (GL) or ParameterError (parameters).
+    EndoscopeView(const GlFunctions& gl, const WallSurface& surface, const RenderParameters& parameters);
+    ~EndoscopeView();
+    EndoscopeView(const EndoscopeView&) = delete;
+    EndoscopeView& operator=(const EndoscopeView&) = delete;
+
+    /// The wall's current visual vertex positions (one column per vertex of
+    /// surface.rest, e.g. MeshMapping::apply of the physics positions).
+    /// Computes the smooth normals and uploads both.
+    void setWallPositions(const Eigen::Matrix3Xd& positions);
+
+    /// Draws the view into `framebuffer` (0: the context's default) of
+    /// width x height pixels.
+    void render(const CameraPose& pose, const LensState& lens, int width, int height, GLuint framebuffer = 0);
+
+    /// Red-out amount (0..1) of the last render.
+    [[nodiscard]] double redOut() const { return m_redOut; }
+    /// Distance from `point` to the nearest wall vertex within `coneAngle`
+    /// (rad) of `forward` (pi/2: the half-space ahead), m (infinity when none).
+    [[nodiscard]] double wallDistanceAhead(const Eigen::Vector3d& point, const Eigen::Vector3d& forward,
+                                           double coneAngle = 1.5707963267948966) const;
+    [[nodiscard]] FisheyeLens lens(int width, int height) const
+    {
+        return {m_parameters.fieldOfView, width, height};
+    }
+
+private:
+    void resizeTarget(int width, int height);
+    void bakeMucosa();
+
+    const GlFunctions& m_gl;
+    RenderParameters m_parameters;
+    std::unique_ptr<ShaderProgram> m_wall;
+    std::unique_ptr<ShaderProgram> m_lens;
+    std::unique_ptr<ShaderProgram> m_cleanLens;  ///< the lens pass without soiling and red-out
+    GLuint m_vao = 0;
+    GLuint m_screenVao = 0;
+    GLuint m_dynamicBuffer = 0;
+    GLuint m_staticBuffer = 0;
+    GLuint m_indexBuffer = 0;
+    GLsizei m_numIndices = 0;
+    GLuint m_mucosa = 0;  ///< the baked, tiling mucosa texture (Shaders.h, kMucosaBake)
+    GLuint m_targetFramebuffer = 0;
+    GLuint m_targetColour = 0;
+    GLuint m_targetDepth = 0;
+    int m_targetWidth = 0;
+    int m_targetHeight = 0;
+    static constexpr int kChunkTriangles = 2048;
+    struct Chunk {
+        std::vector<int> vertices;  ///< unique vertex indices of its triangles
+        GLsizei first = 0;          ///< first index in the index buffer
+        GLsizei count = 0;          ///< number of indices
+    };
+    std::vector<Chunk> m_chunks;
+    std::vector<std::array<int, 3>> m_triangles;
+    Eigen::Matrix3Xd m_positions;
+    Eigen::Matrix3Xd m_normals;
+    std::vector<float> m_upload;
+    double m_redOut = 0.0;
+};
+
+}  // namespace colonosim::render

@@ -1,0 +1,83 @@
+#pragma once
+/// \file
+/// What the renderer knows of the wall besides its shape: texture chart,
+/// findings and preparation, per visual vertex, fixed at load time.
+///
+/// Chart: a centreline parameterisation. Each rest vertex v takes the arc
+/// length s = s_k + (v - c_k).t_k from its nearest centreline sample k and
+/// the clock angle theta = atan2((v - c_k).b, (v - c_k).n) in that sample's
+/// rotation-minimising frame (n, b = t x n), the frame ProceduralColon
+/// builds its rings in. The chart is stored as the point of the straightened
+/// (unrolled-free) cylinder (s, r cos theta, r sin theta), r the centreline
+/// radius, and the procedural textures are 3D noise of it: no seam at
+/// theta = +-pi and no stretching around the circumference. Because the
+/// chart is fixed at rest, textures move with the tissue when it deforms.
+///
+/// Findings are relief on the rest mesh, moved along the inward radial
+/// direction (towards the centreline) by a height profile h(d) of the
+/// distance d from the finding's centre on the wall, within its radius R:
+///   pedunculated: H = 1.2 D, h = H (1 - (d/R)^2)^0.35 (steep stalk, round head)
+///   sessile:      H = 0.5 D, h = H sqrt(1 - (d/R)^2)  (dome)
+///   flat (0-IIa): H = 1.5 mm, h = H (1 - (d/R)^2)
+///   depressed:    H = -1 mm
+///   diverticulum: a pocket outwards, depth D, h = -D (1 + cos(pi d / R)) / 2,
+/// and a colour weight fading over the outer fifth of R.
+
+#include "simcore/geometry/Centreline.h"
+#include "simcore/geometry/Segment.h"
+#include "simcore/geometry/TriangleMesh.h"
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace colonosim::render {
+
+enum class LesionShape : std::uint8_t { Pedunculated, Sessile, Flat, Depressed };
+enum class LesionTissue : std::uint8_t { Adenoma, Serrated, Cancer };
+
+/// A place on the wall: arc length along the centreline (m), clock angle (rad).
+struct WallPlace {
+    double arcLength = 0.0;
+    double angle = 0.0;
+};
+
+struct Lesion {
+    WallPlace place;
+    double diameter = 0.01;  ///< m
+    LesionShape shape = LesionShape::Sessile;
+    LesionTissue tissue = LesionTissue::Adenoma;
+};
+
+struct Diverticulum {
+    WallPlace place;
+    double diameter = 0.006;  ///< m
+};
+
+struct WallFindings {
+    std::vector<Lesion> lesions;
+    std::vector<Diverticulum> diverticula;
+    std::array<double, geometry::kNumSegments> stoolFraction{};  ///< fraction of mucosa covered, by Segment
+};
+
+struct WallSurface {
+    geometry::TriangleMesh rest;  ///< visual mesh at rest with the findings' relief
+    std::vector<float> chart;     ///< 3 per vertex: s, r cos(theta), r sin(theta) (m)
+    std::vector<float> finding;   ///< 4 per vertex: lesion weight, tissue code, stool fraction, diverticulum
+    std::vector<geometry::Segment> vertexSegment;
+    std::vector<Eigen::Vector3d> lesionTops;  ///< rest position of each lesion's highest point
+};
+
+/// The point of the distended wall (centreline radius) at a place, m.
+[[nodiscard]] Eigen::Vector3d wallPoint(const geometry::Centreline& centreline, const WallPlace& place);
+
+/// Builds the chart, findings and relief for `visualRest`. Throws
+/// std::invalid_argument when the centreline has fewer than two samples.
+[[nodiscard]] WallSurface buildWallSurface(const geometry::TriangleMesh& visualRest,
+                                           const geometry::Centreline& centreline,
+                                           const WallFindings& findings);
+
+}  // namespace colonosim::render

@@ -1,0 +1,193 @@
+// Image properties of the endoscope view, rendered headless (OSMesa).
+
+#include "RenderScenes.h"
+
+#include "simcore/render/EndoscopeView.h"
+#include "simcore/render/OffscreenContext.h"
+
+#include <gtest/gtest.h>
+
+namespace {
+
+using namespace colonosim;
+using colonosim::testing::axialPose;
+using colonosim::testing::luminance;
+
+constexpr int kWidth = 320;
+constexpr int kHeight = 240;
+constexpr double kRadius = 0.02;  // m, a descending colon
+constexpr double kLength = 0.30;  // m
+
+struct Frame {
+    render::RgbaImage image;
+    double redOut = 0.0;
+};
+
+Frame renderTube(const render::WallFindings& findings, const render::CameraPose& pose, double soiling = 0.0)
+{
+    render::OffscreenContext context(kWidth, kHeight);
+    const auto tube = colonosim::testing::straightTube(kRadius, kLength, 0.002, 64);
+    const auto centreline = colonosim::testing::straightCentreline(kRadius, kLength, 0.001);
+    const render::WallSurface surface = render::buildWallSurface(tube, centreline, findings);
+    render::EndoscopeView view(context.gl(), surface, render::RenderParameters{});
+    view.render(pose, {soiling, 0.0}, kWidth, kHeight);
+    return {context.readBack(), view.redOut()};
+}
+
+/// Mean luminance of the pixels whose distance from the image centre, as a
+/// fraction of the image-circle radius (half the height), is in [from, to).
+double ringMean(const render::RgbaImage& image, double from, double to)
+{
+    double sum = 0.0;
+    int count = 0;
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            const double r =
+                std::hypot(x + 0.5 - image.width / 2.0, y + 0.5 - image.height / 2.0) / (image.height / 2.0);
+            if (r >= from && r < to) {
+                sum += luminance(image, x, y);
+                ++count;
+            }
+        }
+    }
+    return count > 0 ? sum / count : 0.0;
+}
+
+TEST(EndoscopeView, LumenIsDarkAtTheCentreOfAStraightSegment)
+{
+    const Frame frame = renderTube({}, axialPose(0.02));
+    colonosim::testing::saveArtefact(frame.image, "straight_lumen.png");
+    const double centre = ringMean(frame.image, 0.0, 0.12);
+    const double wall = ringMean(frame.image, 0.55, 0.9);
+    // The far lumen gets light only from beyond ~10 cm (inverse square):
+    // it must be much darker than the near wall, which must be clearly lit.
+    EXPECT_GT(wall, 0.25);
+    EXPECT_LT(centre, 0.25 * wall) << "centre " << centre << " wall " << wall;
+    EXPECT_DOUBLE_EQ(frame.redOut, 0.0);
+}
+
+TEST(EndoscopeView, RedOutFrameIsDominatedByRed)
+{
+    // The lens 1 mm from the wall, looking straight at it.
+    render::CameraPose pose;
+    pose.position = Eigen::Vector3d(kRadius - 0.001, 0.0, 0.15);
+    pose.rotation.col(2) = Eigen::Vector3d::UnitX();  // forward
+    pose.rotation.col(1) = Eigen::Vector3d::UnitZ();  // up
+    pose.rotation.col(0) = pose.rotation.col(1).cross(pose.rotation.col(2));
+    const Frame frame = renderTube({}, pose);
+    colonosim::testing::saveArtefact(frame.image, "red_out.png");
+    EXPECT_DOUBLE_EQ(frame.redOut, 1.0);
+    double r = 0.0, g = 0.0, b = 0.0;
+    for (int y = kHeight / 4; y < 3 * kHeight / 4; ++y) {
+        for (int x = kWidth / 4; x < 3 * kWidth / 4; ++x) {
+            r += frame.image.at(x, y)[0];
+            g += frame.image.at(x, y)[1];
+            b += frame.image.at(x, y)[2];
+        }
+    }
+    EXPECT_GT(r, 4.0 * g);
+    EXPECT_GT(r, 4.0 * b);
+}
+
+TEST(EndoscopeView, LesionAheadAppearsWhereTheLensProjectsIt)
+{
+    render::WallFindings findings;
+    render::Lesion lesion;
+    lesion.place = {0.06, 0.8};
+    lesion.diameter = 0.012;
+    lesion.shape = render::LesionShape::Sessile;
+    findings.lesions.push_back(lesion);
+    const render::CameraPose pose = axialPose(0.02);
+    const Frame with = renderTube(findings, pose);
+    const Frame without = renderTube({}, pose);
+    colonosim::testing::saveArtefact(with.image, "lesion_ahead.png");
+
+    const auto tube = colonosim::testing::straightTube(kRadius, kLength, 0.002, 64);
+    const auto centreline = colonosim::testing::straightCentreline(kRadius, kLength, 0.001);
+    const auto surface = render::buildWallSurface(tube, centreline, findings);
+    const render::FisheyeLens lens{render::RenderParameters{}.fieldOfView, kWidth, kHeight};
+    const auto expected = lens.project(pose, surface.lesionTops[0]);
+    ASSERT_TRUE(expected.has_value());
+
+    // Centroid of the pixels the lesion changed.
+    double sx = 0.0, sy = 0.0;
+    int count = 0;
+    for (int y = 0; y < kHeight; ++y) {
+        for (int x = 0; x < kWidth; ++x) {
+            double d = 0.0;
+            for (int c = 0; c < 3; ++c) {
+                d += std::abs(static_cast<int>(with.image.at(x, y)[c]) -
+                              static_cast<int>(without.image.at(x, y)[c]));
+            }
+            if (d > 60.0) {
+                sx += x + 0.5;
+                sy += y + 0.5;
+                ++count;
+            }
+        }
+    }
+    ASSERT_GT(count, 30) << "the lesion changed too few pixels";
+    // Tolerance: the lesion is a dome ~12 mm across seen obliquely; its
+    // changed pixels' centroid lies within 12% of the image height of its top.
+    EXPECT_NEAR(sx / count, expected->x(), 0.12 * kHeight);
+    EXPECT_NEAR(sy / count, expected->y(), 0.12 * kHeight);
+    // And on the correct side of the image centre.
+    EXPECT_EQ(sx / count > kWidth / 2.0, expected->x() > kWidth / 2.0);
+    EXPECT_EQ(sy / count > kHeight / 2.0, expected->y() > kHeight / 2.0);
+}
+
+TEST(EndoscopeView, NearWallDoesNotGlare)
+{
+    // The lens 5 mm from the wall, looking at it: without the automatic light
+    // control the inverse-square light would saturate most of the view.
+    render::CameraPose pose;
+    pose.position = Eigen::Vector3d(kRadius - 0.005, 0.0, 0.15);
+    pose.rotation.col(2) = Eigen::Vector3d::UnitX();
+    pose.rotation.col(1) = Eigen::Vector3d::UnitZ();
+    pose.rotation.col(0) = pose.rotation.col(1).cross(pose.rotation.col(2));
+    const Frame frame = renderTube({}, pose);
+    colonosim::testing::saveArtefact(frame.image, "near_wall.png");
+    EXPECT_DOUBLE_EQ(frame.redOut, 0.0);
+    int saturated = 0;
+    int inCircle = 0;
+    for (int y = 0; y < kHeight; ++y) {
+        for (int x = 0; x < kWidth; ++x) {
+            if (std::hypot(x + 0.5 - kWidth / 2.0, y + 0.5 - kHeight / 2.0) < 0.9 * kHeight / 2.0) {
+                ++inCircle;
+                saturated += frame.image.at(x, y)[0] >= 250 ? 1 : 0;
+            }
+        }
+    }
+    EXPECT_LT(saturated, inCircle / 20) << saturated << " of " << inCircle << " pixels saturated";
+    // And the wall is still well lit where it faces the lens.
+    EXPECT_GT(luminance(frame.image, kWidth / 2, kHeight / 2), 0.2);
+}
+
+double gradientEnergy(const render::RgbaImage& image)
+{
+    double sum = 0.0;
+    for (int y = 1; y < image.height; ++y) {
+        for (int x = 1; x < image.width; ++x) {
+            const double r = std::hypot(x - image.width / 2.0, y - image.height / 2.0) / (image.height / 2.0);
+            if (r < 0.9) {
+                const double gx = luminance(image, x, y) - luminance(image, x - 1, y);
+                const double gy = luminance(image, x, y) - luminance(image, x, y - 1);
+                sum += gx * gx + gy * gy;
+            }
+        }
+    }
+    return sum;
+}
+
+TEST(EndoscopeView, LensWashedFrameIsClearerThanSoiledOne)
+{
+    const render::CameraPose pose = axialPose(0.02);
+    const Frame soiled = renderTube({}, pose, 1.0);
+    const Frame washed = renderTube({}, pose, 0.0);
+    colonosim::testing::saveArtefact(soiled.image, "lens_soiled.png");
+    colonosim::testing::saveArtefact(washed.image, "lens_washed.png");
+    // Soiling blurs: the washed frame keeps clearly more fine detail.
+    EXPECT_GT(gradientEnergy(washed.image), 1.5 * gradientEnergy(soiled.image));
+}
+
+}  // namespace
