@@ -52,7 +52,8 @@ Set up this Debian 12 machine for colonosim (system packages via apt-get), build
   run [ARGS...]    build, then run the main job: build/trainer_ui/colonosim ARGS...
   test             build, then run every test (ctest in build/)
   test-sanitize    build with AddressSanitizer and UndefinedBehaviorSanitizer in build-sanitize/
-                   (RelWithDebInfo, benchmarks off), then run every test there
+                   (RelWithDebInfo, benchmarks off), then run every test there except those
+                   labelled "slow" (whole procedures; `test` runs them)
   build            install what is missing and build, nothing else
   -h, --help       show this help
 
@@ -167,6 +168,8 @@ case "$cmd" in
         log "running the tests in $SANITIZE_BUILD_DIR (ASan + UBSan)"
         export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_stack_use_after_return=1:strict_init_order=1}"
         export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
-        ctest --test-dir "$SANITIZE_BUILD_DIR" --output-on-failure --parallel "$JOBS"
+        # Tests labelled "slow" (whole procedures through the CLI, the records or the HDC
+        # link) run in `test`; under the sanitizers they would take hours (tests/CMakeLists.txt).
+        ctest --test-dir "$SANITIZE_BUILD_DIR" --output-on-failure --parallel "$JOBS" --label-exclude slow
         ;;
 esac

@@ -94,6 +94,8 @@ void HdcController::tick(double now)
             break;
         }
     }
+    m_linkUp = m_link.open();
+    m_everConnected = m_everConnected.load() || m_link.open();
     const double before = m_servo.output().force;
     const HandleCommand& out = m_servo.tick(now);
     m_stats.maxOutputStep = std::max(m_stats.maxOutputStep, std::abs(out.force - before));

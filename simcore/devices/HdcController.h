@@ -43,6 +43,9 @@ public:
     ForceServo& servo() { return m_servo; }
     [[nodiscard]] const ServoStatistics& statistics() const { return m_stats; }
     [[nodiscard]] bool connected() const { return m_link.open(); }
+    /// From any thread: whether the link is up now, and whether it ever was.
+    [[nodiscard]] bool linkUp() const { return m_linkUp.load(); }
+    [[nodiscard]] bool everConnected() const { return m_everConnected.load(); }
     [[nodiscard]] const std::string& lastRefusal() const { return m_lastRefusal; }
     /// Drops the link (as a cable pulled would).
     void disconnect();
@@ -63,6 +66,8 @@ private:
     double m_lastTick = -1.0;
     bool m_stopReported = false;
     std::atomic<bool> m_emergencyRequest{false};
+    std::atomic<bool> m_linkUp{false};
+    std::atomic<bool> m_everConnected{false};
     std::string m_lastRefusal;
     ServoStatistics m_stats;
 };

@@ -50,8 +50,8 @@ TEST(HdcCli, TheSimulatedDeviceDrivesASessionThroughTheHdcProcess)
                                  " --max-time 2 --json --out " + out.string());
     });
     // The HDC retries until the simulator listens (building the colon takes a moment).
-    const auto hdc =
-        runHdc("--device simulated --connect 127.0.0.1:" + std::to_string(port) + " --duration 8 --json");
+    const auto hdc = runHdc("--device simulated --connect 127.0.0.1:" + std::to_string(port) +
+                            " --duration 120 --exit-on-disconnect --json");
     sim.join();
     ASSERT_EQ(simulator.status, 0) << simulator.output;
     ASSERT_EQ(hdc.status, 0) << hdc.output;

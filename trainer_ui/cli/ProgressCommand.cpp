@@ -124,8 +124,9 @@ int runProgress(std::span<char* const> args)
     std::cout << "\ncertification:\n";
     for (const auto& r : report["certification"]) {
         std::cout << "  " << (r["met"].get<bool>() ? "met    " : "not met") << "  "
-                  << r["description"].get<std::string>() << " (observed " << r["observed"].dump() << " over "
-                  << r["sessions"] << " session(s))\n";
+                  << r["description"].get<std::string>() << " (observed "
+                  << observedText(r["observed"].is_null() ? std::nan("") : r["observed"].get<double>())
+                  << " over " << r["sessions"] << " session(s))\n";
     }
     return 0;
 }

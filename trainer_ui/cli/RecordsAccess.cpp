@@ -10,6 +10,8 @@
 #include <QGuiApplication>
 #include <QStandardPaths>
 
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
@@ -135,6 +137,16 @@ void scoreInto(db::Records& records, const db::Actor& actor, const std::string& 
     for (const auto& [id, state] : curricula::progression(*curriculum.value, attempts)) {
         result.progress[id] = curricula::stateName(state);
     }
+}
+
+std::string observedText(double observed)
+{
+    if (std::isnan(observed)) {
+        return "none yet";
+    }
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", observed);
+    return text;
 }
 
 }  // namespace colonosim::cli

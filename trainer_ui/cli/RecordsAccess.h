@@ -28,6 +28,10 @@ inline const std::vector<std::string> kRecordsOptions = {"--db", "--as", "--pass
 /// platform when `gui`, for drawing reports).
 void ensureQtApplication(bool gui = false);
 
+/// A certification rule's observed value as a person reads it: "none yet"
+/// when nothing has been observed, else the number to 3 significant digits.
+std::string observedText(double observed);
+
 [[nodiscard]] std::filesystem::path defaultDatabasePath();
 
 struct OpenRecords {

@@ -286,9 +286,12 @@ std::string pdfReport(const std::vector<db::SessionRow>& sessions, const nlohman
             p.drawText(QRectF(0, y, 1000, 220), Qt::AlignLeft,
                        met ? QStringLiteral("met") : QStringLiteral("not met"));
             p.setPen(Qt::black);
-            p.drawText(QRectF(1000, y, width - 1000, 220), Qt::AlignLeft,
-                       QString::fromStdString(r["description"].get<std::string>() + " (observed " +
-                                              r["observed"].dump() + ")"));
+            p.drawText(
+                QRectF(1000, y, width - 1000, 220), Qt::AlignLeft,
+                QString::fromStdString(
+                    r["description"].get<std::string>() + " (observed " +
+                    observedText(r["observed"].is_null() ? std::nan("") : r["observed"].get<double>()) +
+                    ")"));
             y += 230;
         }
         y += 200;

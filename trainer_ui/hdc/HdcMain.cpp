@@ -1,5 +1,6 @@
 /// \file
-/// `colonosim-hdc --device simulated --connect HOST:PORT [--duration S] [--hand push|replay:TRACE] [--json]`:
+/// `colonosim-hdc --device simulated --connect HOST:PORT [--duration S] [--hand push|replay:TRACE]
+/// [--exit-on-disconnect] [--json]`:
 /// the Haptic Device Controller, a separate process next to the device. Its servo loop runs at 1 kHz
 /// whatever the simulator does: it sends the device's input to the simulator (`colonosim run --operator
 /// hdc:PORT`) over OpenIGTLink and renders the handle force it gets back, through the safety chain of
@@ -52,17 +53,18 @@ procedure::InputSample push(double t)
 
 int run(std::span<char* const> args)
 {
-    const cli::CommandLine line(args, {"--json", "--help"},
+    const cli::CommandLine line(args, {"--json", "--help", "--exit-on-disconnect"},
                                 {"--device", "--connect", "--duration", "--hand"});
     if (line.has("--help")) {
         std::cout << "usage: colonosim-hdc --device simulated --connect HOST:PORT [--duration S]\n"
-                     "                     [--hand push|replay:TRACE] [--json]\n"
+                     "                     [--hand push|replay:TRACE] [--exit-on-disconnect] [--json]\n"
                      "The Haptic Device Controller: a 1 kHz servo loop next to the device, linked to the\n"
                      "simulator (colonosim run --operator hdc:PORT) over OpenIGTLink.\n"
                      "  --device simulated   a mass-damper device held by a virtual hand (no hardware)\n"
                      "  --duration S         run for S seconds, 0.1-86400 (default 60)\n"
                      "  --hand push          the hand pushes in at 2 cm/s to 30 cm, twisting (default)\n"
                      "  --hand replay:TRACE  the hand follows a recorded input trace (session.trace)\n"
+                     "  --exit-on-disconnect end when the simulator closes the link (after one was made)\n"
                      "SIGINT or SIGTERM is an emergency stop (force to zero at once), then exit.\n";
         return 0;
     }
@@ -111,8 +113,12 @@ int run(std::span<char* const> args)
         hdc.run(stop, duration);
         done = true;
     });
+    const bool exitOnDisconnect = line.has("--exit-on-disconnect");
     while (!done.load() && !g_stop.load()) {
         std::this_thread::sleep_for(std::chrono::milliseconds(2));
+        if (exitOnDisconnect && hdc.everConnected() && !hdc.linkUp()) {
+            break;  // the session is over
+        }
     }
     if (g_stop.load()) {
         hdc.requestEmergencyStop();  // the servo zeroes the force on its next tick
