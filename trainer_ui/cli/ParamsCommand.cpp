@@ -2,10 +2,13 @@
 /// `colonosim params [--markdown]`: every declared physical parameter with its
 /// unit, default, range, meaning and source, from the single declarations.
 
+#include "simcore/contact/ContactParameters.h"
+#include "simcore/devices/HapticParameters.h"
 #include "simcore/geometry/AnatomyParameters.h"
 #include "simcore/physics/ActiveRegion.h"
 #include "simcore/physics/TissueParameters.h"
 #include "simcore/physics/TissueSimulation.h"
+#include "simcore/render/RenderParameters.h"
 #include "simcore/scope/ScopeParameters.h"
 #include "trainer_ui/cli/CommandLine.h"
 #include "trainer_ui/cli/Commands.h"
@@ -46,7 +49,13 @@ int runParams(std::span<char* const> args)
                                                           &physics::SleepParameters::quietTimeSpec};
     std::cout << "## Active region\n\n" << params::markdownTable("sleep", sleep) << '\n';
     std::cout << "## Colonoscope\n\n"
-              << params::markdownTable("scope", specsOf(scope::ScopeParameters::fields()));
+              << params::markdownTable("scope", specsOf(scope::ScopeParameters::fields())) << '\n';
+    std::cout << "## Scope-wall contact\n\n"
+              << params::markdownTable("contact", specsOf(contact::ContactParameters::fields())) << '\n';
+    std::cout << "## Haptic device controller\n\n"
+              << params::markdownTable("haptics", specsOf(devices::HapticParameters::fields())) << '\n';
+    std::cout << "## Rendering\n\n"
+              << params::markdownTable("render", specsOf(render::RenderParameters::fields()));
     return 0;
 }
 
