@@ -7,6 +7,7 @@
 #include "simcore/procedure/DeviceInput.h"
 
 #include <functional>
+#include <span>
 #include <string>
 
 namespace colonosim::devices {
@@ -33,14 +34,81 @@ using HandTrajectory = std::function<procedure::InputSample(double)>;
 class SimulatedDevice final : public HapticDevice {
 public:
     struct Parameters {
-        double carriageMass = 0.3;          ///< kg (assumption: a light linear stage)
-        double carriageDamping = 2.0;       ///< N s/m
-        double rotorInertia = 2e-4;         ///< kg m^2
-        double rotorDamping = 2e-3;         ///< N m s/rad
-        double handStiffness = 800.0;       ///< N/m (assumption: a relaxed grip, a few hundred N/m)
-        double handDamping = 20.0;          ///< N s/m
-        double handTorsionStiffness = 2.0;  ///< N m/rad
-        double handTorsionDamping = 0.05;   ///< N m s/rad
+        static constexpr params::ParameterSpec massSpec{
+            "carriageMass",
+            "kg",
+            0.3,
+            0.01,
+            10.0,
+            "moving mass of the simulated device's linear carriage",
+            "assumption: a light linear stage"};
+        static constexpr params::ParameterSpec dampingSpec{"carriageDamping",
+                                                           "N*s/m",
+                                                           2.0,
+                                                           0.0,
+                                                           100.0,
+                                                           "viscous friction of the carriage",
+                                                           "assumption: a lightly damped linear bearing"};
+        static constexpr params::ParameterSpec inertiaSpec{
+            "rotorInertia",
+            "kg*m^2",
+            2e-4,
+            1e-6,
+            1e-1,
+            "inertia of the simulated device's shaft rotor",
+            "assumption: a short shaft section with its encoder"};
+        static constexpr params::ParameterSpec rotorDampingSpec{
+            "rotorDamping",
+            "N*m*s/rad",
+            2e-3,
+            0.0,
+            1.0,
+            "viscous friction of the rotor",
+            "assumption: a lightly damped rotary bearing"};
+        static constexpr params::ParameterSpec handStiffnessSpec{
+            "handStiffness",
+            "N/m",
+            800.0,
+            1.0,
+            1e4,
+            "stiffness of the virtual hand's grip along the shaft",
+            "assumption: a relaxed grip, a few hundred N/m (stable at 1 kHz with the carriage mass)"};
+        static constexpr params::ParameterSpec handDampingSpec{
+            "handDamping",
+            "N*s/m",
+            20.0,
+            0.0,
+            200.0,
+            "damping of the virtual hand along the shaft",
+            "assumption: near critical damping of the grip on the carriage"};
+        static constexpr params::ParameterSpec torsionStiffnessSpec{
+            "handTorsionStiffness",
+            "N*m/rad",
+            2.0,
+            0.01,
+            50.0,
+            "torsional stiffness of the virtual hand's grip",
+            "assumption: fingers twisting the shaft"};
+        static constexpr params::ParameterSpec torsionDampingSpec{
+            "handTorsionDamping",
+            "N*m*s/rad",
+            0.05,
+            0.0,
+            1.0,
+            "torsional damping of the virtual hand",
+            "assumption: near critical damping of the grip on the rotor"};
+
+        double carriageMass = massSpec.defaultValue;
+        double carriageDamping = dampingSpec.defaultValue;
+        double rotorInertia = inertiaSpec.defaultValue;
+        double rotorDamping = rotorDampingSpec.defaultValue;
+        double handStiffness = handStiffnessSpec.defaultValue;
+        double handDamping = handDampingSpec.defaultValue;
+        double handTorsionStiffness = torsionStiffnessSpec.defaultValue;
+        double handTorsionDamping = torsionDampingSpec.defaultValue;
+
+        [[nodiscard]] static std::span<const params::Field<Parameters>> fields();
+        void validate() const { params::validateFields("simulatedDevice", fields(), *this); }
     };
 
     SimulatedDevice(HandTrajectory hand, const Parameters& parameters);

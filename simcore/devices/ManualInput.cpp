@@ -1,9 +1,21 @@
 #include "simcore/devices/ManualInput.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace colonosim::devices {
+
+std::span<const params::Field<ManualRates>> ManualRates::fields()
+{
+    static constexpr std::array<params::Field<ManualRates>, 4> kFields{{
+        {&insertionSpec, &ManualRates::insertion},
+        {&rotationSpec, &ManualRates::rotation},
+        {&dialSpec, &ManualRates::dial},
+        {&deadZoneSpec, &ManualRates::deadZone},
+    }};
+    return kFields;
+}
 
 namespace {
 double shaped(double value, double deadZone)

@@ -10,6 +10,8 @@
 
 #include "simcore/procedure/DeviceInput.h"
 
+#include <span>
+
 namespace colonosim::devices {
 
 /// Normalised controls in [-1, 1] (buttons: bits), as a stick or keys give them.
@@ -22,15 +24,48 @@ struct ManualControls {
 };
 
 struct ManualRates {
-    double insertion = 0.05;  ///< m/s at full deflection (assumption: a brisk hand feed, 5 cm/s)
-    double rotation = 1.5;    ///< rad/s at full deflection (assumption: a quarter turn in 1 s)
-    double dial = 2.0;        ///< rad/s at full deflection (assumption: full dial travel in under 2 s)
-    double deadZone = 0.08;   ///< of full deflection, ignored (stick drift)
+    static constexpr params::ParameterSpec insertionSpec{"insertionRate",
+                                                         "m/s",
+                                                         0.05,
+                                                         0.005,
+                                                         0.5,
+                                                         "shaft feed at full deflection of a plain device",
+                                                         "assumption: a brisk hand feed of about 5 cm/s"};
+    static constexpr params::ParameterSpec rotationSpec{"rotationRate",
+                                                        "rad/s",
+                                                        1.5,
+                                                        0.1,
+                                                        10.0,
+                                                        "shaft twist at full deflection of a plain device",
+                                                        "assumption: about a quarter turn in 1 s"};
+    static constexpr params::ParameterSpec dialSpec{"dialRate",
+                                                    "rad/s",
+                                                    2.0,
+                                                    0.1,
+                                                    20.0,
+                                                    "dial turning rate at full deflection of a plain device",
+                                                    "assumption: full dial travel in under 2 s"};
+    static constexpr params::ParameterSpec deadZoneSpec{
+        "deadZone",
+        "1",
+        0.08,
+        0.0,
+        0.5,
+        "share of full deflection ignored around a stick's centre",
+        "assumption: covers the drift of worn gamepad sticks"};
+
+    double insertion = insertionSpec.defaultValue;  ///< m/s
+    double rotation = rotationSpec.defaultValue;    ///< rad/s
+    double dial = dialSpec.defaultValue;            ///< rad/s
+    double deadZone = deadZoneSpec.defaultValue;    ///< 1
+
+    [[nodiscard]] static std::span<const params::Field<ManualRates>> fields();
+    void validate() const { params::validateFields("manual", fields(), *this); }
 };
 
 class ManualInput {
 public:
-    explicit ManualInput(const ManualRates& rates = {}) : m_rates(rates) {}
+    explicit ManualInput(const ManualRates& rates = {}) : m_rates(rates) { m_rates.validate(); }
     /// Integrates `controls` over `dt` (s); returns the new input.
     const procedure::InputSample& update(const ManualControls& controls, double dt);
     [[nodiscard]] const procedure::InputSample& input() const { return m_input; }

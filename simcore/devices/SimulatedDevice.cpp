@@ -1,12 +1,30 @@
 #include "simcore/devices/HapticDevice.h"
 
 #include <algorithm>
+#include <array>
 
 namespace colonosim::devices {
+
+std::span<const params::Field<SimulatedDevice::Parameters>> SimulatedDevice::Parameters::fields()
+{
+    using P = SimulatedDevice::Parameters;
+    static constexpr std::array<params::Field<P>, 8> kFields{{
+        {&P::massSpec, &P::carriageMass},
+        {&P::dampingSpec, &P::carriageDamping},
+        {&P::inertiaSpec, &P::rotorInertia},
+        {&P::rotorDampingSpec, &P::rotorDamping},
+        {&P::handStiffnessSpec, &P::handStiffness},
+        {&P::handDampingSpec, &P::handDamping},
+        {&P::torsionStiffnessSpec, &P::handTorsionStiffness},
+        {&P::torsionDampingSpec, &P::handTorsionDamping},
+    }};
+    return kFields;
+}
 
 SimulatedDevice::SimulatedDevice(HandTrajectory hand, const Parameters& parameters)
     : m_hand(std::move(hand)), m_parameters(parameters)
 {
+    m_parameters.validate();
     m_state = m_hand(0.0);
     m_previousHand = m_state;
 }

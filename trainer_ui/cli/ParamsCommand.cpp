@@ -3,7 +3,9 @@
 /// unit, default, range, meaning and source, from the single declarations.
 
 #include "simcore/contact/ContactParameters.h"
+#include "simcore/devices/HapticDevice.h"
 #include "simcore/devices/HapticParameters.h"
+#include "simcore/devices/ManualInput.h"
 #include "simcore/geometry/AnatomyParameters.h"
 #include "simcore/physics/ActiveRegion.h"
 #include "simcore/physics/TissueParameters.h"
@@ -54,6 +56,12 @@ int runParams(std::span<char* const> args)
               << params::markdownTable("contact", specsOf(contact::ContactParameters::fields())) << '\n';
     std::cout << "## Haptic device controller\n\n"
               << params::markdownTable("haptics", specsOf(devices::HapticParameters::fields())) << '\n';
+    std::cout << "## Plain input devices (keyboard, gamepad)\n\n"
+              << params::markdownTable("manual", specsOf(devices::ManualRates::fields())) << '\n';
+    std::cout << "## Simulated haptic device\n\n"
+              << params::markdownTable("simulatedDevice",
+                                       specsOf(devices::SimulatedDevice::Parameters::fields()))
+              << '\n';
     std::cout << "## Rendering\n\n"
               << params::markdownTable("render", specsOf(render::RenderParameters::fields()));
     return 0;
