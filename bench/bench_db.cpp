@@ -69,6 +69,7 @@ procedure::InputTrace syntheticTrace()
         s.dialUpDown = up;
         s.dialLeftRight = left;
         s.buttons = k % 60000 < 300 ? procedure::kWater : 0;
+        s = procedure::quantizeInput(s);  // as the procedure loop records it
     }
     return trace;
 }

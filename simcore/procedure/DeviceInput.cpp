@@ -1,5 +1,7 @@
 #include "simcore/procedure/DeviceInput.h"
 
+#include <cmath>
+
 namespace colonosim::procedure {
 
 std::string validateInput(const InputSample& sample)
@@ -26,6 +28,17 @@ std::string validateInput(const InputSample& sample)
                " is outside the allowed range [0, 15] (bits: air 1, water 2, suction 4, mark lesion 8)";
     }
     return {};
+}
+
+InputSample quantizeInput(const InputSample& sample)
+{
+    const auto round = [](double value, double step) { return std::nearbyint(value / step) * step; };
+    InputSample q = sample;
+    q.insertion = round(sample.insertion, InputResolution::insertionSpec.defaultValue);
+    q.rotation = round(sample.rotation, InputResolution::angleSpec.defaultValue);
+    q.dialUpDown = round(sample.dialUpDown, InputResolution::angleSpec.defaultValue);
+    q.dialLeftRight = round(sample.dialLeftRight, InputResolution::angleSpec.defaultValue);
+    return q;
 }
 
 }  // namespace colonosim::procedure

@@ -8,7 +8,11 @@
 ///
 /// Values are validated at the device boundary (validateInput): a non-finite
 /// or out-of-range value is refused with the field, the value and the allowed
-/// range, and the loop keeps the last valid sample.
+/// range, and the loop keeps the last valid sample. A valid sample is then
+/// quantised to the input resolution (quantizeInput), as a device's encoders
+/// would: what drives the simulation, and what the trace records, is an exact
+/// multiple of a power of two, so the trace compresses well and replays bit
+/// for bit.
 
 #include "simcore/params/Parameter.h"
 
@@ -62,5 +66,31 @@ struct InputSample {
 /// Empty when the sample is acceptable; otherwise the reason, naming the
 /// field, the value and the allowed range.
 [[nodiscard]] std::string validateInput(const InputSample& sample);
+
+/// The resolution of the input, as a device's encoders give it. Powers of two,
+/// so a quantised value is exact in binary and quantising is idempotent.
+struct InputResolution {
+    static constexpr params::ParameterSpec insertionSpec{
+        "insertionResolution",
+        "m",
+        7.62939453125e-6,
+        7.62939453125e-6,
+        7.62939453125e-6,
+        "step of the recorded insertion length: 2^-17 m (7.6 um)",
+        "assumption: finer than the linear encoders of haptic colonoscopy devices (tens of um); a "
+        "power of two so the value is exact in binary"};
+    static constexpr params::ParameterSpec angleSpec{
+        "angleResolution",
+        "rad",
+        1.220703125e-4,
+        1.220703125e-4,
+        1.220703125e-4,
+        "step of the recorded shaft rotation and dial angles: 2^-13 rad (0.007 deg)",
+        "assumption: finer than rotary encoders of 4,096 counts per turn (1.5 mrad); a power of two "
+        "so the value is exact in binary"};
+};
+
+/// `sample` with its insertion and angles rounded to the input resolution.
+[[nodiscard]] InputSample quantizeInput(const InputSample& sample);
 
 }  // namespace colonosim::procedure

@@ -95,10 +95,12 @@ void ProcedureLoop::applyContact()
 
 const ProcedureOutputs& ProcedureLoop::step(const InputSample& input)
 {
-    m_trace.samples.push_back(input);
     const std::string rejection = validateInput(input);
     if (rejection.empty()) {
-        m_input = input;
+        m_input = quantizeInput(input);
+        m_trace.samples.push_back(m_input);
+    } else {
+        m_trace.samples.push_back(input);  // the raw refused sample: replay refuses it again
     }
     m_frame = ProcedureFrame{};
     m_frame.inputRejected = !rejection.empty();

@@ -10,6 +10,7 @@
 #include "simcore/physics/ActiveRegion.h"
 #include "simcore/physics/TissueParameters.h"
 #include "simcore/physics/TissueSimulation.h"
+#include "simcore/procedure/DeviceInput.h"
 #include "simcore/render/RenderParameters.h"
 #include "simcore/scope/ScopeParameters.h"
 #include "trainer_ui/cli/CommandLine.h"
@@ -56,6 +57,11 @@ int runParams(std::span<char* const> args)
               << params::markdownTable("contact", specsOf(contact::ContactParameters::fields())) << '\n';
     std::cout << "## Haptic device controller\n\n"
               << params::markdownTable("haptics", specsOf(devices::HapticParameters::fields())) << '\n';
+    const std::vector<const params::ParameterSpec*> input{
+        &procedure::InputSample::insertionSpec, &procedure::InputSample::rotationSpec,
+        &procedure::InputSample::dialSpec, &procedure::InputResolution::insertionSpec,
+        &procedure::InputResolution::angleSpec};
+    std::cout << "## Device input\n\n" << params::markdownTable("input", input) << '\n';
     std::cout << "## Plain input devices (keyboard, gamepad)\n\n"
               << params::markdownTable("manual", specsOf(devices::ManualRates::fields())) << '\n';
     std::cout << "## Simulated haptic device\n\n"
