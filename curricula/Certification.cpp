@@ -1,5 +1,6 @@
 #include "curricula/Certification.h"
 
+#include "curricula/XmlRoot.h"
 #include "scoring/MetricDefinitions.h"
 
 #include <tinyxml2.h>
@@ -27,14 +28,8 @@ RuleSetRead parseRuleSet(const std::string& xml, const std::string& label)
         result.errors.push_back(label + ":" + std::to_string(e ? e->GetLineNum() : 0) + ": " + message);
     };
     tinyxml2::XMLDocument document;
-    if (document.Parse(xml.c_str(), xml.size()) != tinyxml2::XML_SUCCESS) {
-        result.errors.push_back(label + ":" + std::to_string(document.ErrorLineNum()) + ": " +
-                                document.ErrorStr());
-        return result;
-    }
-    const tinyxml2::XMLElement* root = document.RootElement();
-    if (!root || std::string(root->Name()) != "certification") {
-        result.errors.push_back(label + ":1: the root element must be <certification>");
+    const tinyxml2::XMLElement* root = parseRoot(document, xml, label, "certification", result.errors);
+    if (root == nullptr) {
         return result;
     }
     RuleSet set;

@@ -1,5 +1,7 @@
 #include "curricula/Curriculum.h"
 
+#include "curricula/XmlRoot.h"
+
 #include <tinyxml2.h>
 
 #include <cmath>
@@ -128,14 +130,8 @@ CurriculumRead parseCurriculum(const std::string& xml, const std::string& label)
     CurriculumRead result;
     Reader r(label);
     tinyxml2::XMLDocument document;
-    if (document.Parse(xml.c_str(), xml.size()) != tinyxml2::XML_SUCCESS) {
-        result.errors.push_back(label + ":" + std::to_string(document.ErrorLineNum()) + ": " +
-                                document.ErrorStr());
-        return result;
-    }
-    const tinyxml2::XMLElement* root = document.RootElement();
-    if (!root || std::string(root->Name()) != "curriculum") {
-        result.errors.push_back(label + ":1: the root element must be <curriculum>");
+    const tinyxml2::XMLElement* root = parseRoot(document, xml, label, "curriculum", result.errors);
+    if (root == nullptr) {
         return result;
     }
     Curriculum c;

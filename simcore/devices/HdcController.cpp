@@ -46,7 +46,8 @@ void HdcController::connectIfDue(double now)
 void HdcController::tick(double now)
 {
     if (m_lastTick >= 0.0) {
-        m_stats.periods.push_back(now - m_lastTick);
+        m_stats.periods.add(now - m_lastTick);
+        m_stats.jitter.add(std::abs(now - m_lastTick - m_servo.parameters().servoPeriod));
     }
     m_lastTick = now;
     ++m_stats.ticks;
@@ -75,7 +76,7 @@ void HdcController::tick(double now)
                     // The load carries the time of the input frame it was computed from.
                     if (m_servo.receive(HandleCommand{m->values[0], m->values[1]}, m->time, now)) {
                         ++m_stats.loadsReceived;
-                        m_stats.latencies.push_back(now - m->time);
+                        m_stats.latencies.add(now - m->time);
                     }
                 } else if (m->kind == Message::Kind::Status && m->statusCode != kStatusOk) {
                     m_lastRefusal = m->statusText;

@@ -11,6 +11,7 @@
 #include "simcore/devices/HapticDevice.h"
 #include "simcore/devices/IgtlMessages.h"
 #include "simcore/devices/TcpLink.h"
+#include "simcore/devices/TimeHistogram.h"
 
 #include <atomic>
 #include <memory>
@@ -21,8 +22,9 @@
 namespace colonosim::devices {
 
 struct ServoStatistics {
-    std::vector<double> periods;    ///< s between consecutive ticks
-    std::vector<double> latencies;  ///< s from an input frame to the load computed from it
+    TimeHistogram periods;    ///< s between consecutive ticks
+    TimeHistogram jitter;     ///< s, |period - servo period|
+    TimeHistogram latencies;  ///< s from an input frame to the load computed from it
     int ticks = 0;
     int loadsReceived = 0;
     int messagesRefused = 0;

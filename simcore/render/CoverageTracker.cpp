@@ -50,21 +50,8 @@ CoverageTracker::CoverageTracker(const GlFunctions& gl, const geometry::Triangle
                   indices.data(), GL_STATIC_DRAW);
     gl.BindVertexArray(0);
 
-    gl.GenFramebuffers(1, &m_framebuffer);
-    gl.GenTextures(1, &m_colour);
-    gl.GenRenderbuffers(1, &m_depth);
-    gl.BindTexture(GL_TEXTURE_2D, m_colour);
-    gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, m_size, m_size, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    gl.BindRenderbuffer(GL_RENDERBUFFER, m_depth);
-    gl.RenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, m_size, m_size);
-    gl.BindFramebuffer(GL_FRAMEBUFFER, m_framebuffer);
-    gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, m_colour, 0);
-    gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, m_depth);
-    if (gl.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-        throw RenderError("the coverage ID buffer is incomplete");
-    }
+    allocateColourDepthTarget(gl, m_framebuffer, m_colour, m_depth, m_size, m_size, GL_NEAREST,
+                              "the coverage ID buffer is incomplete");
     gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
     m_pixels.resize(static_cast<size_t>(m_size) * static_cast<size_t>(m_size) * 4);
 }

@@ -181,25 +181,8 @@ void EndoscopeView::resizeTarget(int width, int height)
         return;
     }
     const GlFunctions& gl = m_gl;
-    if (m_targetFramebuffer == 0) {
-        gl.GenFramebuffers(1, &m_targetFramebuffer);
-        gl.GenTextures(1, &m_targetColour);
-        gl.GenRenderbuffers(1, &m_targetDepth);
-    }
-    gl.BindTexture(GL_TEXTURE_2D, m_targetColour);
-    gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    gl.BindRenderbuffer(GL_RENDERBUFFER, m_targetDepth);
-    gl.RenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
-    gl.BindFramebuffer(GL_FRAMEBUFFER, m_targetFramebuffer);
-    gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, m_targetColour, 0);
-    gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, m_targetDepth);
-    if (gl.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-        throw RenderError("the endoscope view's offscreen target is incomplete");
-    }
+    allocateColourDepthTarget(gl, m_targetFramebuffer, m_targetColour, m_targetDepth, width, height,
+                              GL_LINEAR, "the endoscope view's offscreen target is incomplete");
     m_targetWidth = width;
     m_targetHeight = height;
 }

@@ -100,4 +100,12 @@ struct GlFunctions {
     explicit GlFunctions(const GetProcAddress& getProcAddress);
 };
 
+/// An offscreen render target: a colour texture (`filter` for minification and
+/// magnification, clamped at the edges) and a 24-bit depth renderbuffer on one
+/// framebuffer. The objects are generated on the first call (`framebuffer` is
+/// 0), then only their storage is reallocated. Leaves the framebuffer bound;
+/// throws RenderError naming `what` when it is incomplete.
+void allocateColourDepthTarget(const GlFunctions& gl, GLuint& framebuffer, GLuint& colour, GLuint& depth,
+                               int width, int height, GLint filter, const char* what);
+
 }  // namespace colonosim::render

@@ -1,6 +1,7 @@
 // The HDC's force path: clamps, rate limit, non-finite refusal, watchdog,
 // lost link and emergency stop, tick by tick at the servo period.
 #include "simcore/devices/ForceServo.h"
+#include "simcore/devices/TimeHistogram.h"
 
 #include <gtest/gtest.h>
 
@@ -133,6 +134,26 @@ TEST(ForceServo, ExtrapolatesBetweenUpdatesWithinTheHorizon)
     }
     // Held at the last value plus the trend over the horizon, not beyond it.
     EXPECT_NEAR(out, 1.0 + horizon / 1e-3 * 1.0, 1e-9);
+}
+
+}  // namespace
+
+namespace {
+
+TEST(TimeHistogram, QuantilesToTheMicrosecondAndTheExactMaximum)
+{
+    colonosim::devices::TimeHistogram h;
+    EXPECT_EQ(h.quantile(0.5), 0.0);
+    for (int us = 1; us <= 1000; ++us) {
+        h.add((us - 0.5) * 1e-6);  // one sample in each of the first 1,000 bins
+    }
+    EXPECT_EQ(h.count(), 1000);
+    EXPECT_NEAR(h.quantile(0.5), 501e-6, 1e-12);
+    EXPECT_NEAR(h.quantile(0.99), 991e-6, 1e-12);
+    h.add(0.2);  // beyond the last bin: counted, and the maximum is exact
+    EXPECT_DOUBLE_EQ(h.max(), 0.2);
+    EXPECT_DOUBLE_EQ(h.quantile(1.0), 0.2);
+    EXPECT_NEAR(h.quantile(0.5), 501e-6, 1e-12);
 }
 
 }  // namespace

@@ -9,7 +9,6 @@
 /// requested state, which then settles for 0.2 s; the wall is the colon's
 /// physics mesh mapped onto the visual mesh.
 
-#include "case_generator/CaseReader.h"
 #include "case_generator/SceneSpec.h"
 #include "simcore/geometry/MeshMapping.h"
 #include "simcore/geometry/ProceduralColon.h"
@@ -19,6 +18,7 @@
 #include "simcore/render/LensSoiling.h"
 #include "simcore/render/OffscreenContext.h"
 #include "simcore/render/ShapeView.h"
+#include "trainer_ui/cli/CaseArgument.h"
 #include "trainer_ui/cli/CommandLine.h"
 #include "trainer_ui/cli/Commands.h"
 
@@ -200,15 +200,8 @@ int runRender(std::span<char* const> args)
     geometry::AnatomyParameters anatomyParameters;
     render::WallFindings findings;
     if (caseFile) {
-        const cases::ReadResult read = cases::readCaseFile(*caseFile);
-        if (!read.ok()) {
-            std::string message = "--case " + *caseFile + " is not a valid case:";
-            for (const std::string& error : read.errors) {
-                message += "\n  " + error;
-            }
-            throw UsageError(message);
-        }
-        const cases::SceneSpec scene = cases::toScene(*read.value);
+        const cases::Case theCase = readCaseArgument(*caseFile);
+        const cases::SceneSpec scene = cases::toScene(theCase);
         anatomyParameters = scene.anatomy;
         settings.tissue = scene.tissue;
         settings.environment = scene.environment;

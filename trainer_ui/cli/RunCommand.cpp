@@ -9,7 +9,6 @@
 /// as running before the first step, and completed in one transaction with its trace, recording, events,
 /// metrics, scores and the user's progress (see RecordsAccess.h for authentication).
 
-#include "case_generator/CaseReader.h"
 #include "case_generator/SceneSpec.h"
 #include "curricula/Curriculum.h"
 #include "db/RecordingCodec.h"
@@ -19,6 +18,7 @@
 #include "simcore/devices/HdcOperator.h"
 #include "simcore/geometry/ProceduralColon.h"
 #include "simcore/procedure/Operator.h"
+#include "trainer_ui/cli/CaseArgument.h"
 #include "trainer_ui/cli/CommandLine.h"
 #include "trainer_ui/cli/Commands.h"
 #include "trainer_ui/cli/RecordsAccess.h"
@@ -161,16 +161,9 @@ int runProcedure(std::span<char* const> args)
     geometry::AnatomyParameters anatomyParameters;
     int lesionsPresent = 0;
     if (caseFile) {
-        const cases::ReadResult read = cases::readCaseFile(*caseFile);
-        if (!read.ok()) {
-            std::string message = "--case " + *caseFile + " is not a valid case:";
-            for (const std::string& error : read.errors) {
-                message += "\n  " + error;
-            }
-            throw UsageError(message);
-        }
-        lesionsPresent = static_cast<int>(read.value->lesions.size());
-        const cases::SceneSpec scene = cases::toScene(*read.value);
+        const cases::Case theCase = readCaseArgument(*caseFile);
+        lesionsPresent = static_cast<int>(theCase.lesions.size());
+        const cases::SceneSpec scene = cases::toScene(theCase);
         anatomyParameters = scene.anatomy;
         settings.tissue = scene.tissue;
         settings.environment = scene.environment;

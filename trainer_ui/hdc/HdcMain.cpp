@@ -31,17 +31,6 @@ extern "C" void onSignal(int)
     g_stop = true;
 }
 
-/// The p-quantile (0..1) of `v` (sorted copy), or 0 when empty.
-double quantile(std::vector<double> v, double p)
-{
-    if (v.empty()) {
-        return 0.0;
-    }
-    std::sort(v.begin(), v.end());
-    return v[static_cast<size_t>(
-        std::min<double>(static_cast<double>(v.size() - 1), p * static_cast<double>(v.size())))];
-}
-
 /// Pushes in at 2 cm/s to 30 cm, sweeping the shaft +-0.5 rad at 0.2 Hz.
 procedure::InputSample push(double t)
 {
@@ -129,21 +118,17 @@ int run(std::span<char* const> args)
     servo.join();
 
     const devices::ServoStatistics& s = hdc.statistics();
-    std::vector<double> jitter;
-    for (const double p : s.periods) {
-        jitter.push_back(std::abs(p - parameters.servoPeriod));
-    }
     nlohmann::json out;
     out["ticks"] = s.ticks;
-    out["servo_period_p50_ms"] = 1e3 * quantile(s.periods, 0.5);
-    out["servo_period_p99_ms"] = 1e3 * quantile(s.periods, 0.99);
-    out["servo_period_max_ms"] = 1e3 * quantile(s.periods, 1.0);
-    out["servo_jitter_p99_ms"] = 1e3 * quantile(jitter, 0.99);
-    out["servo_jitter_max_ms"] = 1e3 * quantile(jitter, 1.0);
+    out["servo_period_p50_ms"] = 1e3 * s.periods.quantile(0.5);
+    out["servo_period_p99_ms"] = 1e3 * s.periods.quantile(0.99);
+    out["servo_period_max_ms"] = 1e3 * s.periods.max();
+    out["servo_jitter_p99_ms"] = 1e3 * s.jitter.quantile(0.99);
+    out["servo_jitter_max_ms"] = 1e3 * s.jitter.max();
     out["loads_received"] = s.loadsReceived;
-    out["latency_p50_ms"] = 1e3 * quantile(s.latencies, 0.5);
-    out["latency_p99_ms"] = 1e3 * quantile(s.latencies, 0.99);
-    out["latency_max_ms"] = 1e3 * quantile(s.latencies, 1.0);
+    out["latency_p50_ms"] = 1e3 * s.latencies.quantile(0.5);
+    out["latency_p99_ms"] = 1e3 * s.latencies.quantile(0.99);
+    out["latency_max_ms"] = 1e3 * s.latencies.max();
     out["messages_refused"] = s.messagesRefused;
     out["connections"] = s.reconnects;
     out["max_force_step_N"] = s.maxOutputStep;
