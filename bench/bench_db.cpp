@@ -17,6 +17,7 @@
 #include "db/Records.h"
 #include "db/StoredTrace.h"
 #include "simcore/procedure/InputTrace.h"
+#include "simcore/procedure/Recorder.h"
 
 #include <QCoreApplication>
 #include <QSqlQuery>
@@ -92,6 +93,7 @@ procedure::Recording syntheticRecording()
         s.mesenteryStrain = 0.02 * std::abs(std::sin(t / 11));
         s.discomfort = 2.0 + 1.5 * std::sin(t / 40);
         s.loop = (k / 3000) % 5 == 0 ? procedure::LoopKind::N : procedure::LoopKind::None;
+        s = procedure::quantizeSample(s);  // as the recorder records it
     }
     for (int e = 0; e < 300; ++e) {
         r.events.push_back({4.0 * e, procedure::EventKind::LoopFormed, "N"});

@@ -25,7 +25,7 @@ InputSample ScriptedOperator::next(const ProcedureLoop& loop)
     const double maxInsertion = loop.scope().parameters().workingLength - 0.05;
 
     // The lumen as the camera sees it: the centreline 4 cm ahead of the tip,
-    // in the tip's camera frame (right, up, forward).
+    // in the tip's frame (x = the viewer's left, y = up, z = forward; see TipPose).
     const geometry::Centreline& colon = loop.loops().colon();
     const double ahead =
         std::min(frame.tipArcLength + (m_phase == Phase::Withdraw ? -0.04 : 0.04), colon.length());
@@ -35,7 +35,7 @@ InputSample ScriptedOperator::next(const ProcedureLoop& loop)
         // Turn the dials towards the lumen, following its angular offset with
         // a first-order lag (the operator's reaction), within +-1 rad.
         const double up = std::atan2(inCamera.y(), std::abs(inCamera.z()) + 1e-3);
-        const double left = std::atan2(-inCamera.x(), std::abs(inCamera.z()) + 1e-3);
+        const double left = std::atan2(inCamera.x(), std::abs(inCamera.z()) + 1e-3);
         const double follow = std::min(1.0, m_style.steeringGain * dt);
         m_input.dialUpDown += follow * (std::clamp(up, -1.0, 1.0) - m_input.dialUpDown);
         m_input.dialLeftRight += follow * (std::clamp(left, -1.0, 1.0) - m_input.dialLeftRight);

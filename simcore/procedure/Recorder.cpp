@@ -1,5 +1,6 @@
 #include "simcore/procedure/Recorder.h"
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -87,11 +88,27 @@ void Recorder::record(const ProcedureFrame& f)
     m_retroflexed = retroflexed;
 
     if (f.time + 1e-12 >= m_nextSample) {
-        m_recording.samples.push_back(RecordedSample{f.time, f.input.insertion, f.tipPosition, f.tipSegment,
-                                                     f.handleForce, f.handleTorque, f.maxWallForce,
-                                                     f.mesenteryStrain, f.discomfort, f.loop});
+        m_recording.samples.push_back(quantizeSample(
+            RecordedSample{f.time, f.input.insertion, f.tipPosition, f.tipSegment, f.handleForce,
+                           f.handleTorque, f.maxWallForce, f.mesenteryStrain, f.discomfort, f.loop}));
         m_nextSample += m_parameters.sampleInterval;
     }
+}
+
+RecordedSample quantizeSample(const RecordedSample& sample)
+{
+    const auto round = [](double value, double step) { return std::nearbyint(value / step) * step; };
+    using R = RecordingResolution;
+    RecordedSample q = sample;
+    for (int axis = 0; axis < 3; ++axis) {
+        q.tip[axis] = round(sample.tip[axis], R::positionSpec.defaultValue);
+    }
+    q.handleForce = round(sample.handleForce, R::forceSpec.defaultValue);
+    q.maxWallForce = round(sample.maxWallForce, R::forceSpec.defaultValue);
+    q.handleTorque = round(sample.handleTorque, R::torqueSpec.defaultValue);
+    q.mesenteryStrain = round(sample.mesenteryStrain, R::strainSpec.defaultValue);
+    q.discomfort = round(sample.discomfort, R::discomfortSpec.defaultValue);
+    return q;
 }
 
 std::string Recording::canonicalText() const

@@ -111,6 +111,59 @@ struct RecorderParameters {
     double colonLength = 1.66;  ///< m, from the anatomy
 };
 
+/// The steps the recorded sample values are rounded to, so that the stored
+/// recording (the database keeps it for scoring and re-scoring) is the one
+/// the metrics were computed from, and compact: the bits below these steps
+/// are noise of the solvers, not information. Powers of two, so every
+/// rounded value is exact in binary and the round trip through storage is
+/// bit for bit.
+struct RecordingResolution {
+    static constexpr params::ParameterSpec positionSpec{
+        "recordedPositionResolution",
+        "m",
+        9.5367431640625e-7,
+        9.5367431640625e-7,
+        9.5367431640625e-7,
+        "step of the recorded tip position: 2^-20 m (0.95 um)",
+        "assumption: far finer than the 5 cm working distance and mm-scale path metrics (tip path "
+        "length); finer than electromagnetic scope tracking (~1 mm)"};
+    static constexpr params::ParameterSpec forceSpec{
+        "recordedForceResolution",
+        "N",
+        9.765625e-4,
+        9.765625e-4,
+        9.765625e-4,
+        "step of the recorded handle and wall forces: 2^-10 N (1 mN)",
+        "assumption: a thousandth of the 1-15 N range of insertion forces (Appleyard et al. 2000)"};
+    static constexpr params::ParameterSpec torqueSpec{
+        "recordedTorqueResolution",
+        "N m",
+        6.103515625e-5,
+        6.103515625e-5,
+        6.103515625e-5,
+        "step of the recorded handle torque: 2^-14 N m (0.06 mN m)",
+        "assumption: a thousandth of the ~0.1 N m torques of loop reduction"};
+    static constexpr params::ParameterSpec strainSpec{
+        "recordedStrainResolution",
+        "1",
+        9.5367431640625e-7,
+        9.5367431640625e-7,
+        9.5367431640625e-7,
+        "step of the recorded mesentery strain: 2^-20",
+        "assumption: far below the strains at which discomfort starts (a few percent)"};
+    static constexpr params::ParameterSpec discomfortSpec{
+        "recordedDiscomfortResolution",
+        "1",
+        9.765625e-4,
+        9.765625e-4,
+        9.765625e-4,
+        "step of the recorded discomfort score (0-10): 2^-10",
+        "assumption: far below one step of the 5-point clinical comfort scale (2 points of 10)"};
+};
+
+/// `sample` with its values rounded to RecordingResolution.
+[[nodiscard]] RecordedSample quantizeSample(const RecordedSample& sample);
+
 struct Recording {
     std::vector<RecordedSample> samples;
     std::vector<RecordedEvent> events;

@@ -5,10 +5,10 @@
 /// from the view axis, r = theta / (fieldOfView / 2), the circle filling the
 /// image height.
 ///
-/// Camera frame: the tip pose's rotation (columns right, up, forward, a
+/// Camera frame: the tip pose's rotation (columns x, up, forward, a
 /// rotation with det +1, as scope::TipPose). For a viewer looking along
 /// forward with up at the top, forward x up points to the image's right;
-/// with a det +1 frame that is minus the "right" column, so the image is
+/// with a det +1 frame that is minus the x column, so the image is
 /// drawn as a real lens sees it (not mirrored).
 
 #include <Eigen/Core>
@@ -19,8 +19,9 @@
 namespace colonosim::render {
 
 struct CameraPose {
-    Eigen::Vector3d position = Eigen::Vector3d::Zero();      ///< m, world
-    Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();  ///< columns right, up, forward
+    Eigen::Vector3d position = Eigen::Vector3d::Zero();  ///< m, world
+    Eigen::Matrix3d rotation =
+        Eigen::Matrix3d::Identity();  ///< as scope::TipPose: x the viewer's left, y up, z forward
 };
 
 /// World-to-camera rotation whose rows are the image x axis (forward x up),

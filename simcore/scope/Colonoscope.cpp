@@ -156,7 +156,8 @@ void Colonoscope::updateDials()
     const int n = m_rod.numNodes();
     const int section = std::max(
         1, static_cast<int>(std::lround(m_parameters.bendingSectionLength / m_materialElementLength)));
-    // Up bends forward towards up: a negative rotation about right; right: a positive one about up.
+    // Up bends forward towards up: a negative rotation about x; left (the
+    // viewer's left is +x, see TipPose): a positive one about up.
     const Eigen::Vector3d perJoint = Eigen::Vector3d(-m_upDown, m_leftRight, 0.0) / section;
     const bool active = perJoint.squaredNorm() > 0.0;
     const Eigen::Matrix3d rest = active ? rotationFromVector(perJoint) : Eigen::Matrix3d::Identity();

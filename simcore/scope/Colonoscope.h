@@ -42,8 +42,12 @@
 namespace colonosim::scope {
 
 struct TipPose {
-    Eigen::Vector3d position = Eigen::Vector3d::Zero();      ///< m
-    Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();  ///< columns right, up, forward (camera)
+    Eigen::Vector3d position = Eigen::Vector3d::Zero();  ///< m
+    /// Columns x, y, z of a right-handed frame: z forward (the viewing
+    /// direction), y up, and x = y cross z, which is the viewer's LEFT (the
+    /// image's right is z cross y = -x). The rod names x "right" as its
+    /// bending axis; a positive left/right dial turns the tip towards +x.
+    Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
 };
 
 struct HandleLoad {

@@ -93,7 +93,7 @@ TEST(Colonoscope, DialsBendTheTipByTheClampedAngle)
             EXPECT_GT(forward.y(), 0.1);  // up is +y
         }
         if (c.leftRight < 0.0) {
-            EXPECT_GT(forward.z(), 0.1);  // left is -right = +z
+            EXPECT_GT(forward.z(), 0.1);  // the viewer's right, forward x up = +z
         }
         EXPECT_LE(std::abs(scope.upDownDial()), p.maxUpDownAngulation);
     }
@@ -102,6 +102,25 @@ TEST(Colonoscope, DialsBendTheTipByTheClampedAngle)
 // Handle rotation with the tip held (a tip torque resisting): the tip turns
 // by phi - T L_in / GJ (L_in the inserted length), the twist spread along the shaft; the handle
 // torque equals the resisting torque (eq 1 at the clamp).
+TEST(Colonoscope, PositiveLeftDialTurnsTheViewToTheViewersLeft)
+{
+    // The viewer's left is up x forward (x of TipPose); the image's right is
+    // forward x up. Operators and devices rely on "left positive".
+    Colonoscope straight = insertedScope(0.5);
+    straight.step();
+    const Eigen::Matrix3d before = straight.tipPose().rotation;
+    const Eigen::Vector3d viewersLeft = before.col(1).cross(before.col(2));
+    EXPECT_NEAR((viewersLeft - before.col(0)).norm(), 0.0, 1e-12);
+    for (const double dial : {0.5, -0.5}) {
+        Colonoscope scope = insertedScope(0.5);
+        scope.setDials(0.0, dial);
+        scope.step();
+        const Eigen::Vector3d forward = scope.tipPose().rotation.col(2);
+        EXPECT_NEAR(forward.dot(viewersLeft), std::sin(dial), 1e-9) << dial;
+        EXPECT_NEAR(forward.dot(before.col(1)), 0.0, 1e-9) << dial;  // no up/down
+    }
+}
+
 TEST(Colonoscope, HandleRotationReachesTheTipThroughTorsion)
 {
     const double insertion = 1.0;

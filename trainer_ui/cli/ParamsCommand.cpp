@@ -11,6 +11,7 @@
 #include "simcore/physics/TissueParameters.h"
 #include "simcore/physics/TissueSimulation.h"
 #include "simcore/procedure/DeviceInput.h"
+#include "simcore/procedure/Recorder.h"
 #include "simcore/render/RenderParameters.h"
 #include "simcore/scope/ScopeParameters.h"
 #include "trainer_ui/cli/CommandLine.h"
@@ -62,6 +63,11 @@ int runParams(std::span<char* const> args)
         &procedure::InputSample::dialSpec, &procedure::InputResolution::insertionSpec,
         &procedure::InputResolution::angleSpec};
     std::cout << "## Device input\n\n" << params::markdownTable("input", input) << '\n';
+    const std::vector<const params::ParameterSpec*> recording{
+        &procedure::RecorderParameters::sampleIntervalSpec, &procedure::RecordingResolution::positionSpec,
+        &procedure::RecordingResolution::forceSpec,         &procedure::RecordingResolution::torqueSpec,
+        &procedure::RecordingResolution::strainSpec,        &procedure::RecordingResolution::discomfortSpec};
+    std::cout << "## Recording\n\n" << params::markdownTable("recording", recording) << '\n';
     std::cout << "## Plain input devices (keyboard, gamepad)\n\n"
               << params::markdownTable("manual", specsOf(devices::ManualRates::fields())) << '\n';
     std::cout << "## Simulated haptic device\n\n"
