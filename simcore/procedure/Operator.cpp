@@ -24,12 +24,15 @@ InputSample ScriptedOperator::next(const ProcedureLoop& loop)
     const double force = loop.outputs().handleForce;
     const double maxInsertion = loop.scope().parameters().workingLength - 0.05;
 
-    // The lumen as the camera sees it: the centreline 4 cm ahead of the tip,
-    // in the tip's frame (x = the viewer's left, y = up, z = forward; see TipPose).
+    // The lumen as the camera sees it: the deformed lumen's centre 4 cm
+    // ahead of the tip, in the tip's frame (x = the viewer's left, y = up,
+    // z = forward; see TipPose).
     const geometry::Centreline& colon = loop.loops().colon();
-    const double ahead =
-        std::min(frame.tipArcLength + (m_phase == Phase::Withdraw ? -0.04 : 0.04), colon.length());
-    const Eigen::Vector3d target = geometry::sampleCentreline(colon, std::max(ahead, 0.0)).point;
+    Eigen::Vector3d target = frame.tipPosition;
+    if (!loop.lumen().contacts().empty()) {
+        const contact::LumenStation& at = loop.lumen().contacts().back().station;
+        target = loop.lumen().tube().centreAlong(at, m_phase == Phase::Withdraw ? -0.04 : 0.04);
+    }
     const Eigen::Vector3d inCamera = loop.outputs().tip.rotation.transpose() * (target - frame.tipPosition);
     if (inCamera.norm() > 1e-6 && m_phase != Phase::Withdraw) {
         // Turn the dials towards the lumen, following its angular offset with

@@ -130,6 +130,14 @@ void Colonoscope::step()
     solveChain(m_rod, static_cast<int>(m_parameters.solverIterations), m_parameters.solverRelaxation);
 }
 
+void Colonoscope::step(const std::function<void(DiscreteRod&)>& afterIteration)
+{
+    for (int it = 0; it < static_cast<int>(m_parameters.solverIterations); ++it) {
+        solveChain(m_rod, 1, m_parameters.solverRelaxation);
+        afterIteration(m_rod);
+    }
+}
+
 TipPose Colonoscope::tipPose() const
 {
     return {m_rod.position.back(), m_rod.frame.back()};

@@ -37,6 +37,7 @@
 
 #include <Eigen/Core>
 
+#include <functional>
 #include <span>
 
 namespace colonosim::scope {
@@ -84,6 +85,9 @@ public:
 
     /// One time step: `solverIterations` chain iterations, warm-started.
     void step();
+    /// The same, calling `afterIteration` on the rod after each iteration
+    /// (loads that depend on the shape, such as contact, are updated there).
+    void step(const std::function<void(DiscreteRod&)>& afterIteration);
 
     [[nodiscard]] std::span<const Eigen::Vector3d> nodePositions() const { return m_rod.position; }
     [[nodiscard]] TipPose tipPose() const;
