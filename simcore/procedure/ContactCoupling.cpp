@@ -136,7 +136,7 @@ void ContactCoupling::solve(const std::vector<contact::LumenNodeContact>& contac
         m_startForce[a] = m_load[node];
         const double carried = m_load[node].norm();
         const double along = m_load[node].dot(c.normal);
-        m_startLambda[a] = along > -kCarryCosine * carried ? carried : 0.0;
+        m_startLambda[a] = along > kCarryCosine * carried ? carried : std::max(0.0, along);
         m_lambda[a] = m_startLambda[a];
         m_force[a] = m_lambda[a] * c.normal;
     }
@@ -166,9 +166,11 @@ void ContactCoupling::solve(const std::vector<contact::LumenNodeContact>& contac
             double lambda =
                 std::max(0.0, m_lambda[a] + (m_stiffness * depth - m_lambda[a]) / (1.0 + m_stiffness * g));
             // Trust region on the contact-driven motion of this step.
-            const double limit = m_maxStep / std::max(g, 1e-12);
-            lambda = std::min(lambda, m_startLambda[a] + limit);
-            lambda = std::max(lambda, 0.0);
+            // The whole motion, not only its normal part: a load along a bent
+            // tip's axis swings the tip sideways.
+            const double reach = (m_block[a * m + a] * n).norm() + m_wall[a * m + a];
+            const double limit = m_maxStep / std::max(reach, 1e-12);
+            lambda = std::clamp(lambda, std::max(0.0, m_startLambda[a] - limit), m_startLambda[a] + limit);
             largest = std::max(largest, std::abs(lambda - m_lambda[a]));
             m_lambda[a] = lambda;
             m_normal[a] = n;
@@ -223,6 +225,15 @@ void ContactCoupling::update(const std::vector<contact::LumenNodeContact>& conta
         m_compliance[a] = c.normal.dot(m_block[a * m + a] * c.normal) + m_wall[a * m + a];
     }
     m_sweeps = 0;
+}
+
+void ContactCoupling::solveAndApply(scope::DiscreteRod& rod)
+{
+    solve(*m_contacts, rod);
+    for (size_t a = 0; a < m_active.size(); ++a) {
+        const auto node = static_cast<size_t>(m_active[a]);
+        rod.force[node] = m_baseForce[a] + m_force[a];
+    }
 }
 
 void ContactCoupling::relax(scope::DiscreteRod& rod)

@@ -1,5 +1,7 @@
 #include "simcore/procedure/ProcedureLoop.h"
 
+#include <cstdlib>
+
 #include "simcore/geometry/CentrelineSampling.h"
 #include "simcore/physics/StaticSolver.h"
 
@@ -78,7 +80,12 @@ void ProcedureLoop::applyContact()
     m_scope.addGravity(m_settings.environment.gravity *
                        physics::downDirection(m_settings.environment.patientPosition));
     m_coupling.update(contacts, m_contact, m_scope.rod(), static_cast<int>(shift), m_wallCompliance);
-    m_scope.step([this](scope::DiscreteRod& rod) { m_coupling.relax(rod); });
+    if (std::getenv("RELAX") != nullptr) {
+        m_scope.step([this](scope::DiscreteRod& rod) { m_coupling.relax(rod); });
+    } else {
+        m_coupling.solveAndApply(m_scope.rod());
+        m_scope.step();
+    }
     m_coupling.finish(contacts, m_contact);
     // Friction joins the scope's loads for the next step's solve.
     m_colon.body.clearExternalForces();

@@ -55,7 +55,7 @@ struct ProcedureSettings {
     /// m: the contact response moves a scope node at most this far per loop
     /// step (0.5 mm per 1 ms = 0.5 m/s, the fastest insertion the contact
     /// must handle; model choice, see ContactCoupling.h)
-    double contactStepLimit = 5e-3;
+    double contactStepLimit = 0.5e-3;
 };
 
 /// What a haptic device and the camera need after each step.
