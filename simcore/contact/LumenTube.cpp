@@ -54,12 +54,29 @@ LumenTube::LumenTube(const geometry::ColonAnatomy& anatomy)
         }
     }
     const auto rings = static_cast<size_t>(m_numRings);
+    m_ringArc.resize(rings);
+    for (size_t i = 0; i < rings; ++i) {
+        m_ringArc[i] = info[i * static_cast<size_t>(perRing)].arcLength;
+    }
     m_centre.assign(rings, Eigen::Vector3d::Zero());
     m_axis.assign(rings, Eigen::Vector3d::UnitZ());
     m_basisU.assign(rings, Eigen::Vector3d::UnitX());
     m_basisV.assign(rings, Eigen::Vector3d::UnitY());
     m_planar.assign(rings * static_cast<size_t>(perRing), Eigen::Vector2d::Zero());
     update(anatomy.physicsMesh.vertices);
+}
+
+double LumenTube::arcLength(const LumenStation& at) const
+{
+    if (at.beforeStart) {
+        return m_ringArc.front();
+    }
+    const auto ring = static_cast<size_t>(std::clamp(at.ring, 0, m_numRings - 1));
+    if (at.beyondEnd || ring + 1 >= m_ringArc.size()) {
+        return m_ringArc.back();
+    }
+    const double u = std::clamp(at.u, 0.0, 1.0);
+    return (1.0 - u) * m_ringArc[ring] + u * m_ringArc[ring + 1];
 }
 
 void LumenTube::update(const Eigen::Matrix3Xd& wall)

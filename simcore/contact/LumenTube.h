@@ -79,6 +79,9 @@ public:
     [[nodiscard]] LumenStation locate(const Eigen::Vector3d& p, int start) const;
     /// The wall seen from `p` at `station`, radially.
     [[nodiscard]] LumenWallSample wallAt(const Eigen::Vector3d& p, const LumenStation& station) const;
+    /// Where a station lies along the colon at rest (material coordinate), m:
+    /// the rings' arc lengths interpolated; the tube's ends clamp.
+    [[nodiscard]] double arcLength(const LumenStation& at) const;
     /// How far the closed end lies ahead of the dome ring's plane, m (apex height).
     [[nodiscard]] double endHeight() const { return m_endHeight; }
     /// The lumen centre `distance` metres along the axis from station `from`
@@ -93,6 +96,7 @@ private:
     int m_perRing = 0;
     int m_apex = -1;
     double m_endHeight = 0.0;
+    std::vector<double> m_ringArc;  ///< each ring's arc length along the colon at rest, m
     std::vector<Eigen::Vector3d> m_centre, m_axis, m_basisU, m_basisV;
     std::vector<Eigen::Vector2d> m_planar;  ///< per node of the rings, in its ring's plane, m
 };

@@ -61,7 +61,7 @@ void ContactCoupling::buildCompliance(const scope::DiscreteRod& rod)
         const auto i = static_cast<size_t>(k);
         const Eigen::Matrix3d& frame = rod.frame[i];
         const Eigen::Matrix3d w =
-            frame * rod.jointStiffness(k).cwiseInverse().asDiagonal() * frame.transpose();
+            frame * rod.jointResistance(k).cwiseInverse().asDiagonal() * frame.transpose();
         const Eigen::Matrix3d x = skew(rod.position[i]);
         m_prefixA[i + 1] = m_prefixA[i] + w;
         m_prefixB[i + 1] = m_prefixB[i] + w * x;

@@ -77,6 +77,8 @@ void ProcedureLoop::applyContact()
     const auto& contacts = m_contact.compute(m_scopeNow, m_scopeVelocity, 0.5 * m_settings.scope.outerDiameter,
                                              m_colon.body.positions(), m_colon.body.velocities());
     m_scope.clearLoads();
+    static const double ratio = std::getenv("RATIO") ? std::atof(std::getenv("RATIO")) : 0.0;
+    m_scope.beginStep(m_settings.stepping.loopStep, ratio);
     m_scope.addGravity(m_settings.environment.gravity *
                        physics::downDirection(m_settings.environment.patientPosition));
     m_coupling.update(contacts, m_contact, m_scope.rod(), static_cast<int>(shift), m_wallCompliance);
@@ -85,6 +87,22 @@ void ProcedureLoop::applyContact()
     } else {
         m_coupling.solveAndApply(m_scope.rod());
         m_scope.step();
+        static const int outer = std::getenv("OUTER") ? std::atoi(std::getenv("OUTER")) : 1;
+        for (int it = 1; it < outer; ++it) {
+            Eigen::Matrix3Xd now(3, n);
+            const auto moved = m_scope.nodePositions();
+            for (Eigen::Index i = 0; i < n; ++i) {
+                now.col(i) = moved[static_cast<size_t>(i)];
+            }
+            const auto& again = m_contact.compute(now, m_scopeVelocity, 0.5 * m_settings.scope.outerDiameter,
+                                                  m_colon.body.positions(), m_colon.body.velocities());
+            m_scope.clearLoads();
+            m_scope.addGravity(m_settings.environment.gravity *
+                               physics::downDirection(m_settings.environment.patientPosition));
+            m_coupling.update(again, m_contact, m_scope.rod(), 0, m_wallCompliance);
+            m_coupling.solveAndApply(m_scope.rod());
+            m_scope.step();
+        }
     }
     m_coupling.finish(contacts, m_contact);
     // Friction joins the scope's loads for the next step's solve.
@@ -155,7 +173,12 @@ void ProcedureLoop::observe()
     f.tipPosition = tip.position;
     f.tipDirection = tip.rotation.col(2);
     if (m_steps % kLoopDetectionInterval == 0) {
-        m_loops.update(m_scopeNow, m_input.insertion);
+        const auto& stations = m_contact.contacts();
+        m_nodeArcs.resize(stations.size());
+        for (size_t i = 0; i < stations.size(); ++i) {
+            m_nodeArcs[i] = m_contact.tube().arcLength(stations[i].station);
+        }
+        m_loops.update(m_scopeNow, m_input.insertion, m_nodeArcs);
     }
     f.loop = m_loops.current();
     f.tipArcLength = m_loops.signals().tipArcLength;

@@ -106,6 +106,7 @@ private:
     contact::LumenContact m_contact;
     Eigen::VectorXd m_wallCompliance;  ///< dt^2 / m per wall node (0 fixed), m/N
     ContactCoupling m_coupling;
+    std::vector<double> m_nodeArcs;  ///< each scope node's place along the colon (lumen station), m
     LoopDetector m_loops;
     DiscomfortModel m_discomfort;
     Recorder m_recorder;

@@ -10,9 +10,6 @@ double solveChain(DiscreteRod& rod, int iterations, double relaxation)
 {
     const int n = rod.numNodes();
     double largest = 0.0;
-    static const double damping = std::getenv("DAMP") ? std::atof(std::getenv("DAMP")) : 0.0;
-    thread_local std::vector<Eigen::Vector3d> start;
-    start = rod.theta;
     for (int it = 0; it < iterations; ++it) {
         largest = 0.0;
         Eigen::Vector3d f = Eigen::Vector3d::Zero();  // forces at the nodes downstream of k
@@ -23,9 +20,10 @@ double solveChain(DiscreteRod& rod, int iterations, double relaxation)
                 m += (rod.position[i + 1] - rod.position[i]).cross(f);  // eq 1: moment about node k
             }
             const Eigen::Vector3d stiffness = rod.jointStiffness(k);
+            const Eigen::Vector3d& damping = rod.damping[i];
             const Eigen::Vector3d net = rod.frame[i].transpose() * m - stiffness.cwiseProduct(rod.theta[i]) -
-                                        damping * stiffness.cwiseProduct(rod.theta[i] - start[i]);
-            const Eigen::Vector3d step = relaxation * net.cwiseQuotient((1.0 + damping) * stiffness);
+                                        damping.cwiseProduct(rod.theta[i] - rod.thetaStart[i]);
+            const Eigen::Vector3d step = relaxation * net.cwiseQuotient(stiffness + damping);
             rod.theta[i] += step;  // eqs 4-5
             largest = std::max(largest, step.cwiseAbs().maxCoeff());
             f += rod.force[i];

@@ -3,6 +3,7 @@
 #include "simcore/scope/Rotation.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -122,6 +123,32 @@ void Colonoscope::addGravity(const Eigen::Vector3d& gravity)
             length += m_rod.stubLength;
         }
         m_rod.force[static_cast<size_t>(k)] += rho * length * gravity;
+    }
+}
+
+void Colonoscope::beginStep(double dt, double dampingRatio)
+{
+    const int n = m_rod.numNodes();
+    m_rod.thetaStart = m_rod.theta;
+    m_rod.damping.assign(static_cast<size_t>(n), Eigen::Vector3d::Zero());
+    if (!(dt > 0.0) || !(dampingRatio > 0.0)) {
+        return;
+    }
+    const double element = m_rod.elementLength * m_parameters.linearMassDensity;
+    double mass = 0.0;
+    Eigen::Vector3d first = Eigen::Vector3d::Zero();
+    double second = 0.0;
+    for (int k = n - 1; k >= 0; --k) {
+        const auto i = static_cast<size_t>(k);
+        const Eigen::Vector3d& x = m_rod.position[i];
+        const double inertia = std::max(0.0, second - 2.0 * x.dot(first) + x.squaredNorm() * mass);
+        const Eigen::Vector3d k3 = m_rod.jointStiffness(k);
+        static const double floorRatio = std::getenv("DMIN") ? std::atof(std::getenv("DMIN")) : 0.0;
+        m_rod.damping[i] = (2.0 * dampingRatio / dt * (k3 * inertia).cwiseSqrt()).cwiseMax(floorRatio * k3);
+        const double m = k == n - 1 ? 0.5 * element : element;
+        mass += m;
+        first += m * x;
+        second += m * x.squaredNorm();
     }
 }
 

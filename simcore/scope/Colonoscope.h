@@ -83,6 +83,10 @@ public:
     /// to the node forces, lumped per node.
     void addGravity(const Eigen::Vector3d& gravity);
 
+    /// Starts a time step of `dt` s: each joint is damped by the inertia of
+    /// the scope downstream of it, I_k = sum_{j > k} m_j |x_j - x_k|^2, at
+    /// damping ratio zeta: D_k = 2 zeta sqrt(K_k I_k) / dt.
+    void beginStep(double dt, double dampingRatio);
     /// One time step: `solverIterations` chain iterations, warm-started.
     void step();
     /// The same, calling `afterIteration` on the rod after each iteration
