@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 namespace colonosim::procedure {
 
@@ -37,11 +38,22 @@ InputSample ScriptedOperator::next(const ProcedureLoop& loop)
     if (inCamera.norm() > 1e-6 && m_phase != Phase::Withdraw) {
         // Turn the dials towards the lumen, following its angular offset with
         // a first-order lag (the operator's reaction), within +-1 rad.
-        const double up = std::atan2(inCamera.y(), std::abs(inCamera.z()) + 1e-3);
-        const double left = std::atan2(inCamera.x(), std::abs(inCamera.z()) + 1e-3);
+        double up = std::atan2(inCamera.y(), std::abs(inCamera.z()) + 1e-3);
+        double left = std::atan2(inCamera.x(), std::abs(inCamera.z()) + 1e-3);
         const double follow = std::min(1.0, m_style.steeringGain * dt);
+        if (std::getenv("INTEGRAL") != nullptr) {
+            if (m_phase != Phase::Insert) {
+                up = 0.0;
+                left = 0.0;
+            }
+            // Turn the dials while the lumen is off centre and hold them where it is centred.
+            m_input.dialUpDown = std::clamp(m_input.dialUpDown + follow * up, -2.5, 2.5);
+            m_input.dialLeftRight = std::clamp(m_input.dialLeftRight + follow * left, -2.5, 2.5);
+            m_offCentre = std::hypot(up, left);
+        } else {
         m_input.dialUpDown += follow * (std::clamp(up, -1.0, 1.0) - m_input.dialUpDown);
         m_input.dialLeftRight += follow * (std::clamp(left, -1.0, 1.0) - m_input.dialLeftRight);
+        }
     } else {
         m_input.dialUpDown *= 1.0 - dt;  // relax the dials while withdrawing
         m_input.dialLeftRight *= 1.0 - dt;
@@ -55,12 +67,25 @@ InputSample ScriptedOperator::next(const ProcedureLoop& loop)
             m_reduceUntil = std::max(0.0, m_input.insertion - 0.03);
         } else if (frame.tipArcLength >= colon.length() - 0.03 || m_input.insertion >= maxInsertion) {
             m_phase = Phase::Withdraw;
-        } else {
+        } else if (std::getenv("INTEGRAL") == nullptr || m_offCentre < 0.35) {
             m_input.insertion = std::min(m_input.insertion + m_style.insertSpeed * dt, maxInsertion);
+            m_aimingSince = -1.0;
+        } else {
+            // The lumen cannot be centred from here: back off and approach again.
+            m_aimingSince = m_aimingSince < 0.0 ? loop.time() : m_aimingSince;
+            if (loop.time() - m_aimingSince > 1.5) {
+                m_phase = Phase::ReduceLoop;
+                m_reduceUntil = std::max(0.0, m_input.insertion - 0.03);
+                m_aimingSince = -1.0;
+            }
         }
         break;
     }
     case Phase::ReduceLoop:
+        if (std::getenv("INTEGRAL") != nullptr) {
+            m_input.dialUpDown *= 1.0 - 2.0 * dt;  // ease the dials back while backing off
+            m_input.dialLeftRight *= 1.0 - 2.0 * dt;
+        }
         // Withdraw with clockwise torque (clockwise seen from the operator: negative rotation).
         m_input.insertion = std::max(m_input.insertion - 0.5 * m_style.insertSpeed * dt, 0.0);
         if (m_style.reducesLoops) {

@@ -50,6 +50,8 @@ private:
     enum class Phase { Insert, ReduceLoop, Withdraw };
     OperatorStyle m_style;
     Phase m_phase = Phase::Insert;
+    double m_offCentre = 0.0;
+    double m_aimingSince = -1.0;  ///< when the lumen went off centre while inserting, s  ///< the lumen's angular offset in the view, rad
     InputSample m_input;
     double m_reduceUntil = 0.0;  ///< insertion at which a loop reduction ends, m
     bool m_finished = false;

@@ -54,6 +54,12 @@ ProcedureLoop::ProcedureLoop(const geometry::ColonAnatomy& anatomy, const Proced
 
 void ProcedureLoop::applyContact()
 {
+    static const double ratio = std::getenv("RATIO") ? std::atof(std::getenv("RATIO")) : 0.0;
+    static const bool freeMotion = std::getenv("FREE") != nullptr;
+    m_scope.beginStep(m_settings.stepping.loopStep, ratio);
+    if (freeMotion) {
+        m_scope.step();  // the free motion under the last step's loads
+    }
     const auto nodes = m_scope.nodePositions();
     const auto n = static_cast<Eigen::Index>(nodes.size());
     m_scopePrevious = m_scopeNow;
@@ -77,8 +83,6 @@ void ProcedureLoop::applyContact()
     const auto& contacts = m_contact.compute(m_scopeNow, m_scopeVelocity, 0.5 * m_settings.scope.outerDiameter,
                                              m_colon.body.positions(), m_colon.body.velocities());
     m_scope.clearLoads();
-    static const double ratio = std::getenv("RATIO") ? std::atof(std::getenv("RATIO")) : 0.0;
-    m_scope.beginStep(m_settings.stepping.loopStep, ratio);
     m_scope.addGravity(m_settings.environment.gravity *
                        physics::downDirection(m_settings.environment.patientPosition));
     m_coupling.update(contacts, m_contact, m_scope.rod(), static_cast<int>(shift), m_wallCompliance);
