@@ -48,7 +48,11 @@ InputSample ScriptedOperator::next(const ProcedureLoop& loop)
             }
             // Turn the dials while the lumen is off centre and hold them where it is centred.
             m_input.dialUpDown = std::clamp(m_input.dialUpDown + follow * up, -2.5, 2.5);
-            m_input.dialLeftRight = std::clamp(m_input.dialLeftRight + follow * left, -2.5, 2.5);
+            static const double torque = std::getenv("TORQUE") ? std::atof(std::getenv("TORQUE")) : 0.0;
+            // Torque steering: roll the view (shaft rotation) so the lumen comes into the up/down plane.
+            m_input.rotation += torque * dt * std::clamp(left, -1.0, 1.0) * (up >= 0.0 ? 1.0 : -1.0);
+            m_input.dialLeftRight =
+                std::clamp(m_input.dialLeftRight + (torque > 0.0 ? 0.3 : 1.0) * follow * left, -2.5, 2.5);
             m_offCentre = std::hypot(up, left);
         } else {
         m_input.dialUpDown += follow * (std::clamp(up, -1.0, 1.0) - m_input.dialUpDown);
@@ -73,7 +77,7 @@ InputSample ScriptedOperator::next(const ProcedureLoop& loop)
         } else {
             // The lumen cannot be centred from here: back off and approach again.
             m_aimingSince = m_aimingSince < 0.0 ? loop.time() : m_aimingSince;
-            if (loop.time() - m_aimingSince > 1.5) {
+            if (std::getenv("BACKOFF") != nullptr && loop.time() - m_aimingSince > 1.5) {
                 m_phase = Phase::ReduceLoop;
                 m_reduceUntil = std::max(0.0, m_input.insertion - 0.03);
                 m_aimingSince = -1.0;
