@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 
 namespace colonosim::procedure {
@@ -38,6 +39,11 @@ InputSample ScriptedOperator::next(const ProcedureLoop& loop)
     if (inCamera.norm() > 1e-6 && m_phase != Phase::Withdraw) {
         // Turn the dials towards the lumen, following its angular offset with
         // a first-order lag (the operator's reaction), within +-1 rad.
+        if (std::getenv("OPDBG") != nullptr && static_cast<long>(loop.time() * 1000.0) % 2000 == 0) {
+            std::fprintf(stderr, "t=%.1f target in camera (%.1f %.1f %.1f) mm dials (%.2f %.2f)\n", loop.time(),
+                         inCamera.x() * 1e3, inCamera.y() * 1e3, inCamera.z() * 1e3, m_input.dialUpDown,
+                         m_input.dialLeftRight);
+        }
         double up = std::atan2(inCamera.y(), std::abs(inCamera.z()) + 1e-3);
         double left = std::atan2(inCamera.x(), std::abs(inCamera.z()) + 1e-3);
         const double follow = std::min(1.0, m_style.steeringGain * dt);
