@@ -80,6 +80,11 @@ InputSample ScriptedOperator::next(const ProcedureLoop& loop)
         } else if (std::getenv("INTEGRAL") == nullptr || m_offCentre < 0.35) {
             m_input.insertion = std::min(m_input.insertion + m_style.insertSpeed * dt, maxInsertion);
             m_aimingSince = -1.0;
+        } else if (std::getenv("SLIDE") != nullptr &&
+                   std::max(std::abs(m_input.dialUpDown), std::abs(m_input.dialLeftRight)) >= 2.4) {
+            // Slide by: the dials can turn no further, so feed slowly along the wall with them held.
+            m_input.insertion =
+                std::min(m_input.insertion + std::atof(std::getenv("SLIDE")) * m_style.insertSpeed * dt, maxInsertion);
         } else {
             // The lumen cannot be centred from here: back off and approach again.
             m_aimingSince = m_aimingSince < 0.0 ? loop.time() : m_aimingSince;
