@@ -17,9 +17,9 @@ using namespace colonosim;
 int main(int argc, char** argv) {
   double T = atof(argv[1]); int every = atoi(argv[2]);
   const char* who = argc > 3 ? argv[3] : "expert";
-  geometry::AnatomyParameters ap;
+  geometry::AnatomyParameters ap; if (getenv("SIGLEN")) ap.sigmoidLength = atof(getenv("SIGLEN")); if (getenv("SIGDIA")) ap.sigmoidDiameter = atof(getenv("SIGDIA"));
   auto anatomy = geometry::buildProceduralColon(ap);
-  procedure::ProcedureSettings settings; if (getenv("MU")) settings.contact.frictionCoefficient = atof(getenv("MU")); if (getenv("STEP")) settings.contactStepLimit = atof(getenv("STEP"));
+  procedure::ProcedureSettings settings; if (getenv("MES")) settings.tissue.mesenteryModulus = atof(getenv("MES")); if (getenv("MU")) settings.contact.frictionCoefficient = atof(getenv("MU")); if (getenv("STEP")) settings.contactStepLimit = atof(getenv("STEP"));
   procedure::ProcedureLoop loop(anatomy, settings);
   procedure::ScriptedOperator op(std::string(who) == "novice" ? procedure::noviceStyle() : procedure::expertStyle());
   double maxJump = 0; double maxF = 0; int phaseSw = 0; int lastPhase = 0; Eigen::Vector3d last = Eigen::Vector3d::Zero();
