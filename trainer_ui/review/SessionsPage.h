@@ -1,0 +1,40 @@
+#pragma once
+/// \file
+/// A trainee's completed sessions; Replay asks for the chosen session to be
+/// replayed from its stored trace (the shell opens the replay screen).
+
+#include "trainer_ui/app/AppContext.h"
+
+#include <QWidget>
+
+class QComboBox;
+class QLabel;
+class QPushButton;
+class QTableView;
+
+namespace colonosim::app {
+
+class SessionTableModel;
+
+class SessionsPage : public QWidget {
+    Q_OBJECT
+public:
+    explicit SessionsPage(AppContext& context, QWidget* parent = nullptr);
+    void refresh();
+
+Q_SIGNALS:
+    void replayRequested(qint64 session);
+
+private:
+    void load();
+    [[nodiscard]] qint64 chosenSession() const;
+
+    AppContext& m_context;
+    QComboBox* m_trainee;
+    SessionTableModel* m_model;
+    QTableView* m_table;
+    QPushButton* m_replay;
+    QLabel* m_status;
+};
+
+}  // namespace colonosim::app
