@@ -158,6 +158,7 @@ TEST_F(Admin, ImportsCurriculaAndNamesTheLineOfAnError)
 
 TEST_F(Admin, SeesRuleStatusAndExportsReports)
 {
+    tabs->setCurrentIndex(2);
     choose(child<QComboBox>(home, "certTrainee"), QStringLiteral("ada"));
     const auto* rules = child<QTableView>(home, "ruleTable")->model();
     ASSERT_GE(rules->rowCount(), 1);

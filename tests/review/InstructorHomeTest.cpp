@@ -86,7 +86,7 @@ TEST_F(Instructor, SeesTheCohortWithItsTrainees)
 
 TEST_F(Instructor, SeesALearningCurveWithTheBenchmarkAndTheCusumCharts)
 {
-    open(1, "instructor-0-before");
+    tabs->setCurrentIndex(1);
     choose(child<QComboBox>(home, "curveTrainee"), QStringLiteral("ada"));
     choose(child<QComboBox>(home, "curveMetric"), QStringLiteral("max_insertion"));
     open(1, "instructor-2-learning-curves");
@@ -101,6 +101,19 @@ TEST_F(Instructor, SeesALearningCurveWithTheBenchmarkAndTheCusumCharts)
     }
     EXPECT_EQ(points, static_cast<int>(data.adaSessions.size()));
     EXPECT_TRUE(band) << "the benchmark's acceptable zone is drawn";
+
+    // Double-clicking a trainee on the first page opens their curves.
+    tabs->setCurrentIndex(0);
+    QApplication::processEvents();
+    auto* tree = child<QTreeView>(home, "traineeTree");
+    const QModelIndex bob = tree->model()->index(1, 0, tree->model()->index(0, 0));
+    ASSERT_FALSE(tree->visualRect(bob).isEmpty());
+    // As a person's double-click arrives: a click, then the double-click.
+    QTest::mouseClick(tree->viewport(), Qt::LeftButton, {}, tree->visualRect(bob).center());
+    QTest::mouseDClick(tree->viewport(), Qt::LeftButton, {}, tree->visualRect(bob).center());
+    EXPECT_EQ(tabs->currentIndex(), 1);
+    EXPECT_EQ(child<QComboBox>(home, "curveTrainee")->currentText(), QStringLiteral("bob"));
+    choose(child<QComboBox>(home, "curveTrainee"), QStringLiteral("ada"));
     for (const char* name : {"cusumChart", "lcCusumChart"}) {
         QChart* chart = child<QChartView>(home, name)->chart();
         int values = -1;
@@ -121,13 +134,13 @@ TEST_F(Instructor, SeesALearningCurveWithTheBenchmarkAndTheCusumCharts)
 
 TEST_F(Instructor, ListsTheSessionsAndAsksForAReplay)
 {
+    tabs->setCurrentIndex(2);
+    QApplication::processEvents();
     choose(child<QComboBox>(home, "sessionTrainee"), QStringLiteral("bob"));
     auto* table = child<QTableView>(home, "sessionTable");
     ASSERT_EQ(table->model()->rowCount(), static_cast<int>(data.bobSessions.size()));
     auto* replay = child<QPushButton>(home, "replayButton");
     EXPECT_FALSE(replay->isEnabled()) << "nothing chosen yet";
-    tabs->setCurrentIndex(2);
-    QApplication::processEvents();
     const QRect row = table->visualRect(table->model()->index(1, 0));
     QTest::mouseClick(table->viewport(), Qt::LeftButton, {}, row.center());
     open(2, "instructor-3-sessions");
@@ -140,6 +153,7 @@ TEST_F(Instructor, ListsTheSessionsAndAsksForAReplay)
 
 TEST_F(Instructor, ComparesTwoSessions)
 {
+    tabs->setCurrentIndex(4);
     auto* first = child<QComboBox>(home, "compareFirst");
     auto* second = child<QComboBox>(home, "compareSecond");
     first->setCurrentIndex(first->findData(data.adaSessions[0]));

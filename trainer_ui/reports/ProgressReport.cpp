@@ -12,10 +12,14 @@ namespace colonosim::reports {
 
 nlohmann::json progressReport(db::Records& records, const db::Actor& actor, const std::string& user)
 {
+    return progressReport(records.sessions(actor, user), user);
+}
+
+nlohmann::json progressReport(const std::vector<db::SessionRow>& sessions, const std::string& user)
+{
     const auto curriculum =
         curricula::parseCurriculum(curricula::coreCurriculumXml(), "colonoscopy-core.xml");
     const auto rules = curricula::parseRuleSet(curricula::coreRuleSetXml(), "certification-rules.xml");
-    const std::vector<db::SessionRow> sessions = records.sessions(actor, user);
     std::vector<curricula::Attempt> attempts;
     std::vector<scoring::MetricValues> metrics;
     std::vector<bool> failures;

@@ -17,6 +17,9 @@ namespace colonosim::reports {
 /// Throws db::AccessDenied when `actor` may not read `user`'s records.
 [[nodiscard]] nlohmann::json progressReport(db::Records& records, const db::Actor& actor,
                                             const std::string& user);
+/// The same from the trainee's completed sessions already read (Records::sessions).
+[[nodiscard]] nlohmann::json progressReport(const std::vector<db::SessionRow>& sessions,
+                                            const std::string& user);
 
 /// A certification rule's observed value as a person reads it: "none yet"
 /// when nothing has been observed (NaN), else the number to 3 significant digits.

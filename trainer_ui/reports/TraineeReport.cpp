@@ -45,7 +45,7 @@ std::string traineeReport(ReportFormat format, db::Database& database, db::Recor
     case ReportFormat::Xapi: return xapiReport(sessions, xapiHome).dump(2) + "\n";
     case ReportFormat::Pdf: break;
     }
-    const nlohmann::json progress = progressReport(records, actor, user);
+    const nlohmann::json progress = progressReport(sessions, user);
     const std::string pdf = pdfReport(sessions, progress, user, PdfIssue{actor.name, true});
     const SigningKey key = signingKey(database.path().string() + ".signing-key");
     const std::string sha = sha256Hex(pdf);
@@ -57,7 +57,7 @@ std::string traineeReport(ReportFormat format, db::Database& database, db::Recor
 std::string progressPdf(db::Records& records, const db::Actor& actor, const std::string& user)
 {
     const std::vector<db::SessionRow> sessions = records.sessions(actor, user);
-    return pdfReport(sessions, progressReport(records, actor, user), user, PdfIssue{actor.name, false});
+    return pdfReport(sessions, progressReport(sessions, user), user, PdfIssue{actor.name, false});
 }
 
 void writeFileWhole(const std::filesystem::path& path, const std::string& bytes)

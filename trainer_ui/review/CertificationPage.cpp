@@ -24,7 +24,7 @@
 namespace colonosim::app {
 
 CertificationPage::CertificationPage(AppContext& context, QWidget* parent)
-    : QWidget(parent), m_context(context), m_trainee(new QComboBox), m_rules(new QStandardItemModel(this)),
+    : LazyPage(parent), m_context(context), m_trainee(new QComboBox), m_rules(new QStandardItemModel(this)),
       m_table(new QTableView), m_ruleSummary(new QLabel), m_scope(new QComboBox), m_format(new QComboBox),
       m_path(new QLineEdit), m_export(new QPushButton(QStringLiteral("Export"))),
       m_cancel(new QPushButton(QStringLiteral("Cancel"))), m_progress(new QProgressBar), m_status(new QLabel),
@@ -47,6 +47,7 @@ CertificationPage::CertificationPage(AppContext& context, QWidget* parent)
     m_table->setAlternatingRowColors(true);
     m_table->setWordWrap(true);
     m_table->verticalHeader()->hide();
+    m_table->verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_table->horizontalHeader()->setStretchLastSection(true);
     m_format->addItem(QStringLiteral("PDF certification report (signed)"), QStringLiteral("pdf"));
     m_format->addItem(QStringLiteral("CSV, every metric of every session"), QStringLiteral("csv"));
@@ -101,7 +102,6 @@ CertificationPage::CertificationPage(AppContext& context, QWidget* parent)
             say(QStringLiteral("Written: %1").arg(m_path->text()));
         }
     });
-    refresh();
 }
 
 void CertificationPage::say(const QString& text, bool error)
@@ -110,7 +110,7 @@ void CertificationPage::say(const QString& text, bool error)
     m_status->setText(text);
 }
 
-void CertificationPage::refresh()
+void CertificationPage::reload()
 {
     const QString trainee = m_trainee->currentText();
     const QString scope = m_scope->currentText();
@@ -177,7 +177,6 @@ void CertificationPage::showRules()
                 .arg(rules));
         m_table->resizeColumnsToContents();
         m_table->setColumnWidth(1, std::min(m_table->columnWidth(1), 420));
-        m_table->resizeRowsToContents();
     } catch (const std::exception& e) {
         m_ruleSummary->setText(QString::fromStdString(e.what()));
     }

@@ -8,7 +8,7 @@
 
 #include "trainer_ui/app/AppContext.h"
 
-#include <QWidget>
+#include "trainer_ui/review/LazyPage.h"
 
 class QComboBox;
 class QLabel;
@@ -22,11 +22,13 @@ namespace colonosim::app {
 
 class BackgroundJob;
 
-class CertificationPage : public QWidget {
+class CertificationPage : public LazyPage {
     Q_OBJECT
 public:
     explicit CertificationPage(AppContext& context, QWidget* parent = nullptr);
-    void refresh();
+
+protected:
+    void reload() override;
 
 private:
     void showRules();

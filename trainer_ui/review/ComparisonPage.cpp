@@ -32,13 +32,13 @@ QString label(const db::SessionRow& s)
 QString value(const std::map<std::string, double>& values, const std::string& name)
 {
     const auto it = values.find(name);
-    return it == values.end() ? QStringLiteral("—") : QString::number(it->second, 'g', 4);
+    return it == values.end() ? QStringLiteral("—") : QString::number(it->second, 'g', 6);
 }
 
 }  // namespace
 
 ComparisonPage::ComparisonPage(AppContext& context, QWidget* parent)
-    : QWidget(parent), m_context(context), m_first(new QComboBox), m_second(new QComboBox),
+    : LazyPage(parent), m_context(context), m_first(new QComboBox), m_second(new QComboBox),
       m_model(new QStandardItemModel(this)), m_table(new QTableView), m_summary(new QLabel)
 {
     m_first->setObjectName(QStringLiteral("compareFirst"));
@@ -60,10 +60,9 @@ ComparisonPage::ComparisonPage(AppContext& context, QWidget* parent)
     layout->addWidget(m_table, 1);
     connect(m_first, &QComboBox::currentIndexChanged, this, &ComparisonPage::redraw);
     connect(m_second, &QComboBox::currentIndexChanged, this, &ComparisonPage::redraw);
-    refresh();
 }
 
-void ComparisonPage::refresh()
+void ComparisonPage::reload()
 {
     m_sessions.clear();
     for (const std::string& trainee : readableTrainees(m_context.records, m_context.actor)) {
@@ -128,7 +127,8 @@ void ComparisonPage::redraw()
             verdict = QStringLiteral("no better direction");
         } else if (x == first.metrics.end() || y == second.metrics.end()) {
             verdict = QStringLiteral("not measured in both");
-        } else if (x->second == y->second) {
+        } else if (row[2]->text() == row[3]->text()) {
+            // Equal to the 6 significant digits shown: a difference no one can read is no verdict.
             verdict = QStringLiteral("equal");
         } else {
             const bool aBetter =

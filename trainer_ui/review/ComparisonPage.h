@@ -6,7 +6,7 @@
 
 #include "trainer_ui/app/AppContext.h"
 
-#include <QWidget>
+#include "trainer_ui/review/LazyPage.h"
 
 #include <vector>
 
@@ -17,13 +17,15 @@ class QTableView;
 
 namespace colonosim::app {
 
-class ComparisonPage : public QWidget {
+class ComparisonPage : public LazyPage {
     Q_OBJECT
 public:
     explicit ComparisonPage(AppContext& context, QWidget* parent = nullptr);
-    void refresh();
     /// Chooses two sessions by id (false when either is not listed).
     bool compare(qint64 first, qint64 second);
+
+protected:
+    void reload() override;
 
 private:
     void redraw();

@@ -66,9 +66,6 @@ QString CurriculumPage::sentence(const std::string& error)
         return text;
     }
     QString message = m.captured(2);
-    if (!message.isEmpty()) {
-        message[0] = message[0].toUpper();
-    }
     if (!message.endsWith(QLatin1Char('.'))) {
         message += QLatin1Char('.');
     }

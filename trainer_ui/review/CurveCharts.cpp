@@ -68,9 +68,10 @@ QLineSeries* horizontal(const QString& name, double y, double x0, double x1, con
     return line;
 }
 
-/// The trainee's values as a line with points.
+/// The trainee's values as a line, with a point per session while they can be told apart.
 void traineeSeries(QChart& chart, const Axes& axes, const QString& name, const std::vector<double>& values)
 {
+    constexpr size_t kMostDots = 200;
     auto* line = new QLineSeries;
     line->setName(name);
     line->setPen(QPen(kTrainee, 2.5));
@@ -78,13 +79,20 @@ void traineeSeries(QChart& chart, const Axes& axes, const QString& name, const s
     dots->setColor(kTrainee);
     dots->setBorderColor(kTrainee);
     dots->setMarkerSize(9.0);
+    QList<QPointF> points;
+    points.reserve(static_cast<qsizetype>(values.size()));
     for (size_t k = 0; k < values.size(); ++k) {
-        line->append(static_cast<double>(k + 1), values[k]);
-        dots->append(static_cast<double>(k + 1), values[k]);
+        points.append(QPointF(static_cast<double>(k + 1), values[k]));
     }
+    line->replace(points);
     attach(chart, line, axes);
-    attach(chart, dots, axes);
-    chart.legend()->markers(dots).front()->setVisible(false);
+    if (values.size() <= kMostDots) {
+        dots->replace(points);
+        attach(chart, dots, axes);
+        chart.legend()->markers(dots).front()->setVisible(false);
+    } else {
+        delete dots;
+    }
 }
 
 void fitY(QValueAxis& y, std::vector<double> values)

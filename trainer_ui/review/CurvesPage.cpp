@@ -45,7 +45,7 @@ std::optional<scoring::BenchmarkSet> benchmarkOf(db::Records& records, const std
 }  // namespace
 
 CurvesPage::CurvesPage(AppContext& context, QWidget* parent)
-    : QWidget(parent), m_context(context), m_trainee(new QComboBox), m_metric(new QComboBox),
+    : LazyPage(parent), m_context(context), m_trainee(new QComboBox), m_metric(new QComboBox),
       m_caption(new QLabel), m_metricView(chartView(QStringLiteral("metricChart"))),
       m_cusumView(chartView(QStringLiteral("cusumChart"))),
       m_lcCusumView(chartView(QStringLiteral("lcCusumChart")))
@@ -80,12 +80,12 @@ CurvesPage::CurvesPage(AppContext& context, QWidget* parent)
     layout->addLayout(grid, 1);
     connect(m_trainee, &QComboBox::currentIndexChanged, this, &CurvesPage::redraw);
     connect(m_metric, &QComboBox::currentIndexChanged, this, &CurvesPage::redraw);
-    refresh();
 }
 
-void CurvesPage::refresh()
+void CurvesPage::reload()
 {
-    const QString current = m_trainee->currentText();
+    const QString current = m_wanted.isEmpty() ? m_trainee->currentText() : m_wanted;
+    m_wanted.clear();
     {
         const QSignalBlocker block(m_trainee);
         m_trainee->clear();
@@ -103,6 +103,8 @@ void CurvesPage::showTrainee(const QString& trainee)
 {
     if (const int k = m_trainee->findText(trainee); k >= 0) {
         m_trainee->setCurrentIndex(k);
+    } else {
+        m_wanted = trainee;
     }
 }
 
@@ -116,8 +118,12 @@ void CurvesPage::redraw()
     }
     try {
         const std::vector<db::SessionRow> sessions = m_context.records.sessions(m_context.actor, trainee);
-        const std::vector<db::CurvePoint> points =
-            m_context.records.learningCurve(m_context.actor, trainee, metric);
+        std::vector<db::CurvePoint> points;
+        for (const db::SessionRow& s : sessions) {
+            if (const auto it = s.metrics.find(metric); it != s.metrics.end()) {
+                points.push_back({s.id, it->second});
+            }
+        }
         const std::string task = sessions.empty() ? std::string() : sessions.back().task;
         const std::optional<scoring::BenchmarkSet> benchmark =
             task.empty() ? std::nullopt : benchmarkOf(m_context.records, task);

@@ -6,7 +6,7 @@
 
 #include "trainer_ui/app/AppContext.h"
 
-#include <QWidget>
+#include "trainer_ui/review/LazyPage.h"
 
 class QComboBox;
 class QLabel;
@@ -15,12 +15,14 @@ class QChart;
 
 namespace colonosim::app {
 
-class CurvesPage : public QWidget {
+class CurvesPage : public LazyPage {
     Q_OBJECT
 public:
     explicit CurvesPage(AppContext& context, QWidget* parent = nullptr);
-    void refresh();
     void showTrainee(const QString& trainee);
+
+protected:
+    void reload() override;
 
 private:
     void redraw();
@@ -32,6 +34,7 @@ private:
     QChartView* m_metricView;
     QChartView* m_cusumView;
     QChartView* m_lcCusumView;
+    QString m_wanted;  ///< the trainee to show once the page has loaded
 };
 
 }  // namespace colonosim::app

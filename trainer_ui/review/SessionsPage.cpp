@@ -15,7 +15,7 @@
 namespace colonosim::app {
 
 SessionsPage::SessionsPage(AppContext& context, QWidget* parent)
-    : QWidget(parent), m_context(context), m_trainee(new QComboBox), m_model(new SessionTableModel(this)),
+    : LazyPage(parent), m_context(context), m_trainee(new QComboBox), m_model(new SessionTableModel(this)),
       m_table(new QTableView), m_replay(new QPushButton(QStringLiteral("Replay"))), m_status(new QLabel)
 {
     m_trainee->setObjectName(QStringLiteral("sessionTrainee"));
@@ -28,6 +28,7 @@ SessionsPage::SessionsPage(AppContext& context, QWidget* parent)
     m_table->setAlternatingRowColors(true);
     m_table->verticalHeader()->hide();
     m_table->horizontalHeader()->setStretchLastSection(true);
+    m_table->horizontalHeader()->setResizeContentsPrecision(100);  // column widths from 100 rows, not 10,000
     m_replay->setEnabled(false);
     m_replay->setToolTip(QStringLiteral("Replays the chosen session from its stored input trace"));
     auto* top = new QHBoxLayout;
@@ -52,10 +53,9 @@ SessionsPage::SessionsPage(AppContext& context, QWidget* parent)
             Q_EMIT replayRequested(session);
         }
     });
-    refresh();
 }
 
-void SessionsPage::refresh()
+void SessionsPage::reload()
 {
     const QString current = m_trainee->currentText();
     {

@@ -5,7 +5,7 @@
 
 #include "trainer_ui/app/AppContext.h"
 
-#include <QWidget>
+#include "trainer_ui/review/LazyPage.h"
 
 class QComboBox;
 class QLabel;
@@ -16,14 +16,16 @@ namespace colonosim::app {
 
 class SessionTableModel;
 
-class SessionsPage : public QWidget {
+class SessionsPage : public LazyPage {
     Q_OBJECT
 public:
     explicit SessionsPage(AppContext& context, QWidget* parent = nullptr);
-    void refresh();
 
 Q_SIGNALS:
     void replayRequested(qint64 session);
+
+protected:
+    void reload() override;
 
 private:
     void load();

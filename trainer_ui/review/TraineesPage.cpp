@@ -12,7 +12,7 @@
 namespace colonosim::app {
 
 TraineesPage::TraineesPage(AppContext& context, QWidget* parent)
-    : QWidget(parent), m_context(context), m_model(new QStandardItemModel(this)), m_tree(new QTreeView),
+    : LazyPage(parent), m_context(context), m_model(new QStandardItemModel(this)), m_tree(new QTreeView),
       m_summary(new QLabel)
 {
     m_tree->setObjectName(QStringLiteral("traineeTree"));
@@ -29,10 +29,9 @@ TraineesPage::TraineesPage(AppContext& context, QWidget* parent)
             Q_EMIT traineeChosen(name.data().toString());
         }
     });
-    refresh();
 }
 
-void TraineesPage::refresh()
+void TraineesPage::reload()
 {
     m_model->clear();
     m_model->setHorizontalHeaderLabels({QStringLiteral("Cohort / trainee"), QStringLiteral("Sessions"),
@@ -53,9 +52,8 @@ void TraineesPage::refresh()
         for (const std::string& member : cohort.members) {
             QList<QStandardItem*> row{new QStandardItem(QString::fromStdString(member))};
             try {
-                const nlohmann::json progress =
-                    reports::progressReport(m_context.records, m_context.actor, member);
                 const auto sessions = m_context.records.sessions(m_context.actor, member);
+                const nlohmann::json progress = reports::progressReport(sessions, member);
                 row.append(new QStandardItem(QString::number(sessions.size())));
                 QString composite = QStringLiteral("not scored");
                 if (!sessions.empty() && sessions.back().scores.contains("composite")) {

@@ -6,7 +6,7 @@
 
 #include "trainer_ui/app/AppContext.h"
 
-#include <QWidget>
+#include "trainer_ui/review/LazyPage.h"
 
 class QStandardItemModel;
 class QTreeView;
@@ -14,14 +14,16 @@ class QLabel;
 
 namespace colonosim::app {
 
-class TraineesPage : public QWidget {
+class TraineesPage : public LazyPage {
     Q_OBJECT
 public:
     explicit TraineesPage(AppContext& context, QWidget* parent = nullptr);
-    void refresh();
 
 Q_SIGNALS:
     void traineeChosen(const QString& trainee);
+
+protected:
+    void reload() override;
 
 private:
     AppContext& m_context;
