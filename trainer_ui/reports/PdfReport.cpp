@@ -24,7 +24,7 @@ void drawChart(QPainter& p, const QRectF& box, const QString& title, const std::
     p.drawRect(box);
     p.drawText(QRectF(box.left(), box.top() - 260, box.width(), 240), Qt::AlignLeft | Qt::AlignBottom, title);
     if (values.empty()) {
-        p.drawText(box, Qt::AlignCenter, QStringLiteral("no values yet"));
+        p.drawText(box, Qt::AlignCenter, QStringLiteral("no scored sessions yet"));
         return;
     }
     double lo = *std::min_element(values.begin(), values.end());

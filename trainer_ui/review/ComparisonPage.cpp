@@ -35,6 +35,12 @@ QString value(const std::map<std::string, double>& values, const std::string& na
     return it == values.end() ? QStringLiteral("—") : QString::number(it->second, 'g', 6);
 }
 
+/// The unit as a person reads it: blank for a count, share or score (unit 1).
+QString unitText(std::string_view unit)
+{
+    return unit == "1" ? QString() : QString::fromUtf8(unit.data(), static_cast<qsizetype>(unit.size()));
+}
+
 }  // namespace
 
 ComparisonPage::ComparisonPage(AppContext& context, QWidget* parent)
@@ -50,6 +56,7 @@ ComparisonPage::ComparisonPage(AppContext& context, QWidget* parent)
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->setAlternatingRowColors(true);
     m_table->verticalHeader()->hide();
+    m_table->verticalHeader()->setDefaultSectionSize(m_table->fontMetrics().height() + 6);
     m_table->horizontalHeader()->setStretchLastSection(true);
     auto* form = new QFormLayout;
     form->addRow(QStringLiteral("Session A:"), m_first);
@@ -114,11 +121,10 @@ void ComparisonPage::redraw()
     const QColor better(200, 235, 205);
     for (const scoring::MetricDefinition& d : scoring::metricDefinitions()) {
         const std::string name(d.name);
-        QList<QStandardItem*> row{
-            new QStandardItem(QString::fromStdString(name)),
-            new QStandardItem(QString::fromUtf8(d.unit.data(), static_cast<qsizetype>(d.unit.size()))),
-            new QStandardItem(value(first.metrics, name)), new QStandardItem(value(second.metrics, name)),
-            new QStandardItem};
+        QList<QStandardItem*> row{new QStandardItem(QString::fromStdString(name)),
+                                  new QStandardItem(unitText(d.unit)),
+                                  new QStandardItem(value(first.metrics, name)),
+                                  new QStandardItem(value(second.metrics, name)), new QStandardItem};
         row[0]->setToolTip(QString::fromUtf8(d.help.data(), static_cast<qsizetype>(d.help.size())));
         const auto x = first.metrics.find(name);
         const auto y = second.metrics.find(name);

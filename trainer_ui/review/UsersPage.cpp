@@ -70,6 +70,7 @@ UsersPage::UsersPage(AppContext& context, QWidget* parent)
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->setAlternatingRowColors(true);
     m_table->verticalHeader()->hide();
+    m_table->verticalHeader()->setDefaultSectionSize(m_table->fontMetrics().height() + 6);
     m_table->horizontalHeader()->setStretchLastSection(true);
     for (const db::Role role : {db::Role::Student, db::Role::Instructor, db::Role::Administrator}) {
         m_newRole->addItem(QString::fromStdString(db::roleName(role)), static_cast<int>(role));
