@@ -1,4 +1,5 @@
 #include "trainer_ui/review/ComparisonPage.h"
+#include "trainer_ui/review/TraineeSessions.h"
 
 #include "scoring/MetricDefinitions.h"
 #include "trainer_ui/review/ReadableTrainees.h"
@@ -43,9 +44,10 @@ QString unitText(std::string_view unit)
 
 }  // namespace
 
-ComparisonPage::ComparisonPage(AppContext& context, QWidget* parent)
-    : LazyPage(parent), m_context(context), m_first(new QComboBox), m_second(new QComboBox),
-      m_model(new QStandardItemModel(this)), m_table(new QTableView), m_summary(new QLabel)
+ComparisonPage::ComparisonPage(AppContext& context, TraineeSessions& sessions, QWidget* parent)
+    : LazyPage(parent), m_context(context), m_cache(sessions), m_first(new QComboBox),
+      m_second(new QComboBox), m_model(new QStandardItemModel(this)), m_table(new QTableView),
+      m_summary(new QLabel)
 {
     m_first->setObjectName(QStringLiteral("compareFirst"));
     m_second->setObjectName(QStringLiteral("compareSecond"));
@@ -73,8 +75,8 @@ void ComparisonPage::reload()
 {
     m_sessions.clear();
     for (const std::string& trainee : readableTrainees(m_context.records, m_context.actor)) {
-        for (auto& s : m_context.records.sessions(m_context.actor, trainee)) {
-            m_sessions.push_back(std::move(s));
+        for (const db::SessionRow& s : m_cache.of(trainee)) {
+            m_sessions.push_back(s);
         }
     }
     const QSignalBlocker blockFirst(m_first);

@@ -17,10 +17,12 @@ class QTableView;
 
 namespace colonosim::app {
 
+class TraineeSessions;
+
 class ComparisonPage : public LazyPage {
     Q_OBJECT
 public:
-    explicit ComparisonPage(AppContext& context, QWidget* parent = nullptr);
+    ComparisonPage(AppContext& context, TraineeSessions& sessions, QWidget* parent = nullptr);
     /// Chooses two sessions by id (false when either is not listed).
     bool compare(qint64 first, qint64 second);
 
@@ -31,6 +33,7 @@ private:
     void redraw();
 
     AppContext& m_context;
+    TraineeSessions& m_cache;
     std::vector<db::SessionRow> m_sessions;
     QComboBox* m_first;
     QComboBox* m_second;

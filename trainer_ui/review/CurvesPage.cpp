@@ -1,4 +1,5 @@
 #include "trainer_ui/review/CurvesPage.h"
+#include "trainer_ui/review/TraineeSessions.h"
 
 #include "curricula/Curriculum.h"
 #include "scoring/MetricDefinitions.h"
@@ -44,9 +45,9 @@ std::optional<scoring::BenchmarkSet> benchmarkOf(db::Records& records, const std
 
 }  // namespace
 
-CurvesPage::CurvesPage(AppContext& context, QWidget* parent)
-    : LazyPage(parent), m_context(context), m_trainee(new QComboBox), m_metric(new QComboBox),
-      m_caption(new QLabel), m_metricView(chartView(QStringLiteral("metricChart"))),
+CurvesPage::CurvesPage(AppContext& context, TraineeSessions& sessions, QWidget* parent)
+    : LazyPage(parent), m_context(context), m_cache(sessions), m_trainee(new QComboBox),
+      m_metric(new QComboBox), m_caption(new QLabel), m_metricView(chartView(QStringLiteral("metricChart"))),
       m_cusumView(chartView(QStringLiteral("cusumChart"))),
       m_lcCusumView(chartView(QStringLiteral("lcCusumChart")))
 {
@@ -117,7 +118,7 @@ void CurvesPage::redraw()
         return;
     }
     try {
-        const std::vector<db::SessionRow> sessions = m_context.records.sessions(m_context.actor, trainee);
+        const std::vector<db::SessionRow>& sessions = m_cache.of(trainee);
         std::vector<db::CurvePoint> points;
         for (const db::SessionRow& s : sessions) {
             if (const auto it = s.metrics.find(metric); it != s.metrics.end()) {

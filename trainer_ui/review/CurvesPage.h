@@ -15,10 +15,12 @@ class QChart;
 
 namespace colonosim::app {
 
+class TraineeSessions;
+
 class CurvesPage : public LazyPage {
     Q_OBJECT
 public:
-    explicit CurvesPage(AppContext& context, QWidget* parent = nullptr);
+    CurvesPage(AppContext& context, TraineeSessions& sessions, QWidget* parent = nullptr);
     void showTrainee(const QString& trainee);
 
 protected:
@@ -28,6 +30,7 @@ private:
     void redraw();
 
     AppContext& m_context;
+    TraineeSessions& m_cache;
     QComboBox* m_trainee;
     QComboBox* m_metric;
     QLabel* m_caption;

@@ -4,6 +4,7 @@
 #include "trainer_ui/review/ComparisonPage.h"
 #include "trainer_ui/review/CurvesPage.h"
 #include "trainer_ui/review/SessionsPage.h"
+#include "trainer_ui/review/TraineeSessions.h"
 #include "trainer_ui/review/TraineesPage.h"
 
 #include <QTabWidget>
@@ -12,9 +13,12 @@
 namespace colonosim::app {
 
 InstructorHome::InstructorHome(AppContext& context, QWidget* parent)
-    : QWidget(parent), m_context(context), m_tabs(new QTabWidget), m_trainees(new TraineesPage(context)),
-      m_curves(new CurvesPage(context)), m_sessions(new SessionsPage(context)),
-      m_library(new CaseLibraryPage(context)), m_comparison(new ComparisonPage(context))
+    : QWidget(parent), m_context(context),
+      m_sessionCache(std::make_unique<TraineeSessions>(context.records, context.actor)),
+      m_tabs(new QTabWidget), m_trainees(new TraineesPage(context, *m_sessionCache)),
+      m_curves(new CurvesPage(context, *m_sessionCache)),
+      m_sessions(new SessionsPage(context, *m_sessionCache)), m_library(new CaseLibraryPage(context)),
+      m_comparison(new ComparisonPage(context, *m_sessionCache))
 {
     setObjectName(QStringLiteral("instructorHome"));
     m_tabs->setObjectName(QStringLiteral("instructorTabs"));
@@ -33,8 +37,11 @@ InstructorHome::InstructorHome(AppContext& context, QWidget* parent)
     });
 }
 
+InstructorHome::~InstructorHome() = default;
+
 void InstructorHome::refresh()
 {
+    m_sessionCache->clear();
     m_trainees->refresh();
     m_curves->refresh();
     m_sessions->refresh();

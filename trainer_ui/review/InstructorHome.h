@@ -12,10 +12,13 @@
 
 #include <QWidget>
 
+#include <memory>
+
 class QTabWidget;
 
 namespace colonosim::app {
 
+class TraineeSessions;
 class TraineesPage;
 class CurvesPage;
 class SessionsPage;
@@ -27,7 +30,10 @@ class InstructorHome : public QWidget {
 public:
     explicit InstructorHome(AppContext& context, QWidget* parent = nullptr);
 
-    /// Reads the records again (after sessions were added elsewhere).
+    ~InstructorHome() override;
+
+    /// Reads the records again (after sessions were added elsewhere): each
+    /// page reloads when next shown.
     void refresh();
 
 Q_SIGNALS:
@@ -35,6 +41,7 @@ Q_SIGNALS:
 
 private:
     AppContext& m_context;
+    std::unique_ptr<TraineeSessions> m_sessionCache;
     QTabWidget* m_tabs;
     TraineesPage* m_trainees;
     CurvesPage* m_curves;

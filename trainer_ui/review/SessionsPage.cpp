@@ -1,4 +1,5 @@
 #include "trainer_ui/review/SessionsPage.h"
+#include "trainer_ui/review/TraineeSessions.h"
 
 #include "trainer_ui/review/ReadableTrainees.h"
 #include "trainer_ui/review/SessionTableModel.h"
@@ -14,9 +15,10 @@
 
 namespace colonosim::app {
 
-SessionsPage::SessionsPage(AppContext& context, QWidget* parent)
-    : LazyPage(parent), m_context(context), m_trainee(new QComboBox), m_model(new SessionTableModel(this)),
-      m_table(new QTableView), m_replay(new QPushButton(QStringLiteral("Replay"))), m_status(new QLabel)
+SessionsPage::SessionsPage(AppContext& context, TraineeSessions& sessions, QWidget* parent)
+    : LazyPage(parent), m_context(context), m_cache(sessions), m_trainee(new QComboBox),
+      m_model(new SessionTableModel(this)), m_table(new QTableView),
+      m_replay(new QPushButton(QStringLiteral("Replay"))), m_status(new QLabel)
 {
     m_trainee->setObjectName(QStringLiteral("sessionTrainee"));
     m_table->setObjectName(QStringLiteral("sessionTable"));
@@ -76,8 +78,7 @@ void SessionsPage::load()
 {
     try {
         const std::string trainee = m_trainee->currentText().toStdString();
-        m_model->setSessions(trainee.empty() ? std::vector<db::SessionRow>{}
-                                             : m_context.records.sessions(m_context.actor, trainee));
+        m_model->setSessions(trainee.empty() ? std::vector<db::SessionRow>{} : m_cache.of(trainee));
         m_table->resizeColumnsToContents();
         m_status->setText(trainee.empty() ? QStringLiteral("No trainee to show.")
                                           : QStringLiteral("%1 completed session(s). Choose one and press "

@@ -14,12 +14,14 @@ class QTableView;
 
 namespace colonosim::app {
 
+class TraineeSessions;
+
 class SessionTableModel;
 
 class SessionsPage : public LazyPage {
     Q_OBJECT
 public:
-    explicit SessionsPage(AppContext& context, QWidget* parent = nullptr);
+    SessionsPage(AppContext& context, TraineeSessions& sessions, QWidget* parent = nullptr);
 
 Q_SIGNALS:
     void replayRequested(qint64 session);
@@ -32,6 +34,7 @@ private:
     [[nodiscard]] qint64 chosenSession() const;
 
     AppContext& m_context;
+    TraineeSessions& m_cache;
     QComboBox* m_trainee;
     SessionTableModel* m_model;
     QTableView* m_table;

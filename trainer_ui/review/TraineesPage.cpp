@@ -1,4 +1,5 @@
 #include "trainer_ui/review/TraineesPage.h"
+#include "trainer_ui/review/TraineeSessions.h"
 
 #include "db/Cohorts.h"
 #include "trainer_ui/reports/ProgressReport.h"
@@ -11,9 +12,9 @@
 
 namespace colonosim::app {
 
-TraineesPage::TraineesPage(AppContext& context, QWidget* parent)
-    : LazyPage(parent), m_context(context), m_model(new QStandardItemModel(this)), m_tree(new QTreeView),
-      m_summary(new QLabel)
+TraineesPage::TraineesPage(AppContext& context, TraineeSessions& sessions, QWidget* parent)
+    : LazyPage(parent), m_context(context), m_cache(sessions), m_model(new QStandardItemModel(this)),
+      m_tree(new QTreeView), m_summary(new QLabel)
 {
     m_tree->setObjectName(QStringLiteral("traineeTree"));
     m_tree->setModel(m_model);
@@ -52,7 +53,7 @@ void TraineesPage::reload()
         for (const std::string& member : cohort.members) {
             QList<QStandardItem*> row{new QStandardItem(QString::fromStdString(member))};
             try {
-                const auto sessions = m_context.records.sessions(m_context.actor, member);
+                const auto& sessions = m_cache.of(member);
                 const nlohmann::json progress = reports::progressReport(sessions, member);
                 row.append(new QStandardItem(QString::number(sessions.size())));
                 QString composite = QStringLiteral("not scored");

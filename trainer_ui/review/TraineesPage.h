@@ -14,10 +14,12 @@ class QLabel;
 
 namespace colonosim::app {
 
+class TraineeSessions;
+
 class TraineesPage : public LazyPage {
     Q_OBJECT
 public:
-    explicit TraineesPage(AppContext& context, QWidget* parent = nullptr);
+    TraineesPage(AppContext& context, TraineeSessions& sessions, QWidget* parent = nullptr);
 
 Q_SIGNALS:
     void traineeChosen(const QString& trainee);
@@ -27,6 +29,7 @@ protected:
 
 private:
     AppContext& m_context;
+    TraineeSessions& m_cache;
     QStandardItemModel* m_model;
     QTreeView* m_tree;
     QLabel* m_summary;
