@@ -85,7 +85,7 @@ struct Admin : ::testing::Test {
     {
         auto* button = child<QPushButton>(home, "exportButton");
         QTest::mouseClick(button, Qt::LeftButton);
-        QTest::qWaitFor([&] { return button->isEnabled(); }, 60000);
+        EXPECT_TRUE(QTest::qWaitFor([&] { return button->isEnabled(); }, 60000)) << "the export ends";
         return status("exportStatus");
     }
 };
@@ -198,7 +198,7 @@ TEST_F(Admin, SeesRuleStatusAndExportsReports)
     auto* button = child<QPushButton>(home, "exportButton");
     QTest::mouseClick(button, Qt::LeftButton);
     QTest::mouseClick(child<QPushButton>(home, "cancelExportButton"), Qt::LeftButton);
-    QTest::qWaitFor([&] { return button->isEnabled(); }, 60000);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return button->isEnabled(); }, 60000)) << "the export ends";
     EXPECT_TRUE(status("exportStatus").contains(QStringLiteral("cancelled; no file was written")))
         << status("exportStatus").toStdString();
     EXPECT_FALSE(std::filesystem::exists(folder));
