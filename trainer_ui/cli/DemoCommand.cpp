@@ -115,13 +115,13 @@ int runDemo(std::span<char* const> args)
                "  --db FILE      the records database (default: records.sqlite in the user's data "
                "directory)\n"
                "  --out DIR      where the case and the report go (default: demo/ beside the database)\n"
-               "  --max-time S   simulated seconds of the procedure, 1-900 (default 20)\n"
+               "  --max-time S   simulated seconds of the procedure, 1-900 (default 10)\n"
                "  --seed N       the case generator's seed, 0-1000000 (default 1)\n"
                "  --tissue       the tissue demonstration instead (its own options, see demo --tissue "
                "--help)\n";
         return 0;
     }
-    const double maxTime = line.number("--max-time", 20.0, 1.0, 900.0, "s");
+    const double maxTime = line.number("--max-time", 10.0, 1.0, 900.0, "s");
     const auto seed = static_cast<std::uint64_t>(std::llround(line.number("--seed", 1.0, 0.0, 1e6, "")));
     const bool json = line.has("--json");
     std::ostream& log = json ? std::cerr : std::cout;
