@@ -1,6 +1,7 @@
 #include "db/Records.h"
 
 #include "db/Password.h"
+#include "db/Statement.h"
 
 #include <QCryptographicHash>
 #include <QSqlError>
@@ -21,52 +22,10 @@ std::string s(const QVariant& v)
     return v.toString().toStdString();
 }
 
-/// Prepares, binds in order and runs; throws DatabaseError with the statement.
 QSqlQuery run(QSqlDatabase db, const QString& sql, const QVariantList& binds = {})
 {
-    QSqlQuery query(db);
-    query.setForwardOnly(true);
-    if (!query.prepare(sql)) {
-        throw DatabaseError(sql.toStdString() + ": " + query.lastError().text().toStdString());
-    }
-    for (const QVariant& b : binds) {
-        query.addBindValue(b);
-    }
-    if (!query.exec()) {
-        throw DatabaseError(query.lastError().text().toStdString() +
-                            " (in: " + sql.simplified().toStdString() + ")");
-    }
-    return query;
+    return runStatement(std::move(db), sql, binds);
 }
-
-/// BEGIN IMMEDIATE (takes the write lock at once, so WAL readers never
-/// deadlock an upgrade), names the actor for the audit triggers; rolls back
-/// unless committed.
-class WriteTransaction {
-public:
-    WriteTransaction(QSqlDatabase db, std::optional<qint64> actor) : m_db(db)
-    {
-        run(m_db, QStringLiteral("BEGIN IMMEDIATE"));
-        m_open = true;
-        run(m_db, QStringLiteral("UPDATE actor_context SET user_id = ? WHERE id = 1"),
-            {actor ? QVariant(*actor) : QVariant()});
-    }
-    ~WriteTransaction()
-    {
-        if (m_open) {
-            QSqlQuery(m_db).exec(QStringLiteral("ROLLBACK"));
-        }
-    }
-    void commit()
-    {
-        run(m_db, QStringLiteral("COMMIT"));
-        m_open = false;
-    }
-
-private:
-    QSqlDatabase m_db;
-    bool m_open = false;
-};
 
 void checkName(const std::string& field, const std::string& value)
 {

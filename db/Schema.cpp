@@ -182,6 +182,28 @@ const std::vector<std::vector<const char*>>& migrations()
             R"(CREATE INDEX scores_by_session ON scores (session_id))",
             R"(CREATE INDEX audit_by_table ON audit (table_name, row_id))",
         },
+        // 4: a case assigned to a trainee or to a whole cohort
+        {
+            R"(CREATE TABLE case_assignments (
+                 id INTEGER PRIMARY KEY,
+                 case_id INTEGER NOT NULL REFERENCES cases(id) ON DELETE CASCADE,
+                 user_id INTEGER REFERENCES users(id) ON DELETE CASCADE,
+                 cohort_id INTEGER REFERENCES cohorts(id) ON DELETE CASCADE,
+                 assigned_by INTEGER NOT NULL REFERENCES users(id),
+                 assigned_at TEXT NOT NULL DEFAULT (strftime('%Y-%m-%dT%H:%M:%fZ', 'now')),
+                 CHECK ((user_id IS NULL) <> (cohort_id IS NULL)))
+            )",
+            R"(CREATE UNIQUE INDEX case_assignments_to_user ON case_assignments (case_id, user_id)
+                 WHERE user_id IS NOT NULL)",
+            R"(CREATE UNIQUE INDEX case_assignments_to_cohort ON case_assignments (case_id, cohort_id)
+                 WHERE cohort_id IS NOT NULL)",
+            R"(CREATE TRIGGER case_assignments_audit_insert AFTER INSERT ON case_assignments BEGIN
+                 INSERT INTO audit (actor_id, table_name, row_id, action, detail)
+                 VALUES ((SELECT user_id FROM actor_context WHERE id = 1), 'case_assignments', NEW.id,
+                         'insert', 'case ' || NEW.case_id ||
+                         CASE WHEN NEW.user_id IS NULL THEN ' to cohort ' || NEW.cohort_id
+                              ELSE ' to user ' || NEW.user_id END); END)",
+        },
     };
     return all;
 }

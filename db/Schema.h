@@ -12,6 +12,8 @@
 ///      triggers on users, scores, progress and certificates
 ///   2  versioned benchmark sets; a score names the benchmark version it used
 ///   3  indexes for the per-trainee dashboard queries
+///   4  case assignments: a stored case assigned to a trainee or a cohort
+///      (audited)
 
 #include <QSqlDatabase>
 

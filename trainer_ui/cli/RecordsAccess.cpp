@@ -10,8 +10,6 @@
 #include <QGuiApplication>
 #include <QStandardPaths>
 
-#include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
@@ -67,6 +65,7 @@ OpenRecords openRecords(const CommandLine& line, std::ostream& notices)
         const std::string password = chosen && *chosen ? chosen : db::randomPassword();
         const db::Actor admin = out.records->bootstrapAdministrator("admin", password);
         out.records->storeCurriculum(admin, "colonoscopy-core", curricula::coreCurriculumXml());
+        out.firstAdministrator = admin;
         notices << "records: first start of " << path.string() << ": administrator \"admin\" created";
         if (chosen && *chosen) {
             notices << " with the password from COLONOSIM_ADMIN_PASSWORD\n";
@@ -137,16 +136,6 @@ void scoreInto(db::Records& records, const db::Actor& actor, const std::string& 
     for (const auto& [id, state] : curricula::progression(*curriculum.value, attempts)) {
         result.progress[id] = curricula::stateName(state);
     }
-}
-
-std::string observedText(double observed)
-{
-    if (std::isnan(observed)) {
-        return "none yet";
-    }
-    char text[32];
-    std::snprintf(text, sizeof text, "%.3g", observed);
-    return text;
 }
 
 }  // namespace colonosim::cli

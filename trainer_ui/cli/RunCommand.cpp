@@ -11,8 +11,6 @@
 
 #include "case_generator/SceneSpec.h"
 #include "curricula/Curriculum.h"
-#include "db/RecordingCodec.h"
-#include "db/StoredTrace.h"
 #include "scoring/SessionMetrics.h"
 #include "simcore/devices/Gamepad.h"
 #include "simcore/devices/HdcOperator.h"
@@ -22,6 +20,7 @@
 #include "trainer_ui/cli/CommandLine.h"
 #include "trainer_ui/cli/Commands.h"
 #include "trainer_ui/cli/RecordsAccess.h"
+#include "trainer_ui/cli/StoredSession.h"
 
 #include <nlohmann/json.hpp>
 
@@ -66,11 +65,6 @@ nlohmann::json summarise(const procedure::Recording& recording, double duration)
     out["peak_discomfort"] = peakDiscomfort;
     out["events"] = recording.events.size();
     return out;
-}
-
-QByteArray bytes(const std::vector<char>& v)
-{
-    return QByteArray(v.data(), static_cast<qsizetype>(v.size()));
 }
 
 /// The curriculum task a stored session belongs to; UsageError listing the runnable ones.
@@ -216,13 +210,7 @@ int runProcedure(std::span<char* const> args)
         scoring::ScoringContext context;
         context.colonLength = settings.recorder.colonLength;
         context.lesionsPresent = lesionsPresent;
-        db::SessionResult result;
-        result.trace = bytes(db::encodeStoredTrace(loop.trace()));
-        result.recording = bytes(db::encodeRecording(loop.recording()));
-        result.duration = loop.time();
-        for (const auto& e : loop.recording().events) {
-            result.events.push_back({e.time, std::string(procedure::eventName(e.kind)), e.detail});
-        }
+        db::SessionResult result = storedSession(loop);
         scoreInto(*records.records, actor, task, scoring::computeMetrics(loop.recording(), context), result);
         records.records->completeSession(actor, session, result);
         summary["session"] = session;

@@ -1,0 +1,54 @@
+#pragma once
+/// \file
+/// Certification for the administrator: the status of every certification
+/// rule for a chosen trainee, and the export of reports (signed PDF, CSV,
+/// xAPI) for one trainee or a whole cohort. Exports run off the UI thread
+/// with a progress bar and Cancel; a cancelled or failed export leaves no
+/// file behind (reports/CohortExport.h).
+
+#include "trainer_ui/app/AppContext.h"
+
+#include "trainer_ui/review/LazyPage.h"
+
+class QComboBox;
+class QLabel;
+class QLineEdit;
+class QProgressBar;
+class QPushButton;
+class QStandardItemModel;
+class QTableView;
+
+namespace colonosim::app {
+
+class BackgroundJob;
+
+class CertificationPage : public LazyPage {
+    Q_OBJECT
+public:
+    explicit CertificationPage(AppContext& context, QWidget* parent = nullptr);
+
+protected:
+    void reload() override;
+
+private:
+    void showRules();
+    void startExport();
+    void suggestPath();
+    void say(const QString& text, bool error = false);
+
+    AppContext& m_context;
+    QComboBox* m_trainee;
+    QStandardItemModel* m_rules;
+    QTableView* m_table;
+    QLabel* m_ruleSummary;
+    QComboBox* m_scope;
+    QComboBox* m_format;
+    QLineEdit* m_path;
+    QPushButton* m_export;
+    QPushButton* m_cancel;
+    QProgressBar* m_progress;
+    QLabel* m_status;
+    BackgroundJob* m_job;
+};
+
+}  // namespace colonosim::app
