@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <vector>
 
 namespace colonosim::scoring {
@@ -45,7 +46,8 @@ MetricValues computeMetrics(const procedure::Recording& recording, const Scoring
     double cecum = -1.0;
     std::vector<std::pair<double, double>> redOuts;
     double redOutStart = -1.0;
-    int loops = 0, reduced = 0, marks = 0;
+    int loops = 0, reduced = 0, falseMarks = 0;
+    std::map<std::string, double> firstInView, firstMark;  // by lesion name
     bool perforation = false;
     for (const char* name :
          {"loops_n", "loops_alpha", "loops_reverse_alpha", "loops_gamma", "loops_reverse_splenic"}) {
@@ -75,7 +77,14 @@ MetricValues computeMetrics(const procedure::Recording& recording, const Scoring
         }
         case procedure::EventKind::LoopResolved: ++reduced; break;
         case procedure::EventKind::Perforation: perforation = true; break;
-        case procedure::EventKind::LesionMarked: ++marks; break;
+        case procedure::EventKind::LesionInView: firstInView.emplace(e.detail, e.time); break;
+        case procedure::EventKind::LesionMarked:
+            if (firstInView.count(e.detail) != 0) {
+                firstMark.emplace(e.detail, e.time);
+            } else {
+                ++falseMarks;
+            }
+            break;
         default: break;
         }
     }
@@ -106,8 +115,16 @@ MetricValues computeMetrics(const procedure::Recording& recording, const Scoring
     m["loops_reduced"] = std::min(reduced, loops);
     m["perforation"] = perforation ? 1.0 : 0.0;
     m["lesions_present"] = context.lesionsPresent;
-    m["lesions_detected"] = std::min(marks, context.lesionsPresent);
+    m["lesions_detected"] = static_cast<double>(std::min<size_t>(firstMark.size(), context.lesionsPresent));
     m["lesions_missed"] = context.lesionsPresent - m["lesions_detected"];
+    m["false_lesion_marks"] = falseMarks;
+    if (!firstMark.empty()) {
+        double sum = 0.0;
+        for (const auto& [lesion, marked] : firstMark) {
+            sum += marked - firstInView.at(lesion);
+        }
+        m["time_to_detection"] = sum / static_cast<double>(firstMark.size());
+    }
 
     // Samples.
     const auto bins = static_cast<size_t>(std::ceil(context.colonLength / context.mucosaBin));

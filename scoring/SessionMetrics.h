@@ -14,8 +14,11 @@
 ///   forces             |handle force|, |handle torque| over the samples; time with
 ///                      |handle force| above the excessive threshold
 ///   discomfort         peak, and share of samples >= the moderate threshold
-///   lesions            marks (LesionMarked) capped at the lesions present; time to
-///                      detection needs lesion positions in the recording (not yet)
+///   lesions            detected: distinct lesions named by a LesionMarked event
+///                      (the recorder names the lesion in view when marked);
+///                      missed: present - detected; time to detection: mean of
+///                      (mark - first LesionInView of that lesion) over the
+///                      detected; false marks: marks with no lesion in view
 ///   path length        sum of |tip(k+1) - tip(k)|
 ///   insertion efficiency  max insertion / sum of positive insertion steps
 

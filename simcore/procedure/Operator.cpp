@@ -9,12 +9,12 @@ namespace colonosim::procedure {
 
 OperatorStyle expertStyle()
 {
-    return {0.03, 0.01, 8.0, true, 2.0};
+    return {0.03, 0.01, 8.0, true, 2.0, 0.5};
 }
 
 OperatorStyle noviceStyle()
 {
-    return {0.06, 0.04, 25.0, false, 0.5};
+    return {0.06, 0.04, 25.0, false, 0.5, 3.0};
 }
 
 InputSample ScriptedOperator::next(const ProcedureLoop& loop)
@@ -42,6 +42,26 @@ InputSample ScriptedOperator::next(const ProcedureLoop& loop)
     } else {
         m_input.dialUpDown *= 1.0 - dt;  // relax the dials while withdrawing
         m_input.dialLeftRight *= 1.0 - dt;
+    }
+
+    // Lesions: mark each once, after it has stayed in view for markDelay
+    // (one press per step at most; the button is released the next step).
+    m_input.buttons &= static_cast<std::uint8_t>(~kMarkLesion);
+    for (int k = 0; k < 32; ++k) {
+        const auto bit = std::uint32_t{1} << k;
+        auto& since = m_inViewSince[static_cast<size_t>(k)];
+        if ((frame.lesionsInView & bit) == 0) {
+            since = -1.0;
+            continue;
+        }
+        if (since < 0.0) {
+            since = loop.time();
+        }
+        if ((m_marked & bit) == 0 && loop.time() - since >= m_style.markDelay &&
+            (m_input.buttons & kMarkLesion) == 0) {
+            m_input.buttons |= kMarkLesion;
+            m_marked |= bit;
+        }
     }
 
     switch (m_phase) {

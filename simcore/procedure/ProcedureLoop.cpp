@@ -29,6 +29,7 @@ ProcedureLoop::ProcedureLoop(const geometry::ColonAnatomy& anatomy, const Proced
       m_scope(settings.scope), m_contact(anatomy.physicsMesh, settings.contact),
       m_coupling(settings.contact.contactStiffness, settings.contactStepLimit), m_loops(anatomy.centreline),
       m_discomfort(withFailureStrain(settings.discomfort, settings.tissue.mesenteryMaxStrain)),
+      m_lesions(anatomy, settings.lesions, settings.viewing),
       m_recorder(withColonLength(settings.recorder, anatomy.centreline.length()))
 {
     // The wall's side of contact is a force term over the tissue substeps; it
@@ -169,6 +170,7 @@ void ProcedureLoop::observe()
     f.mesenteryStrain = pain.mesenteryStrain;
     f.discomfort = m_discomfort.update(pain, dt);
     f.perforation = m_discomfort.perforates(pain);
+    f.lesionsInView = m_lesions.inView(x, tip);
 }
 
 }  // namespace colonosim::procedure

@@ -32,6 +32,7 @@
 #include "simcore/procedure/ContactCoupling.h"
 #include "simcore/procedure/Discomfort.h"
 #include "simcore/procedure/InputTrace.h"
+#include "simcore/procedure/LesionView.h"
 #include "simcore/procedure/LoopDetector.h"
 #include "simcore/procedure/Recorder.h"
 #include "simcore/scope/Colonoscope.h"
@@ -50,6 +51,9 @@ struct ProcedureSettings {
     contact::ContactParameters contact;
     RecorderParameters recorder;
     DiscomfortParameters discomfort;
+    /// The case's lesions (LesionView.h), and the view they are seen by.
+    std::vector<LesionSite> lesions;
+    render::RenderParameters viewing;
     double insufflationRate = 266.6;  ///< Pa/s while air (or, negative, suction) is pressed (2 mmHg/s)
     double maxInsufflation = 8000.0;  ///< Pa the insufflator never exceeds (60 mmHg)
     /// m: the contact response moves a scope node at most this far per loop
@@ -105,6 +109,7 @@ private:
     ContactCoupling m_coupling;
     LoopDetector m_loops;
     DiscomfortModel m_discomfort;
+    LesionView m_lesions;
     Recorder m_recorder;
     InputTrace m_trace;
     InputSample m_input;

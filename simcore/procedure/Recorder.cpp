@@ -24,8 +24,15 @@ std::string_view eventName(EventKind kind)
     case EventKind::InputRejected: return "input_rejected";
     case EventKind::DeviceConnected: return "device_connected";
     case EventKind::DeviceDisconnected: return "device_disconnected";
+    case EventKind::LesionInView: return "lesion_in_view";
+    case EventKind::LesionOutOfView: return "lesion_out_of_view";
     }
     return "unknown";
+}
+
+std::string lesionName(int index)
+{
+    return "lesion " + std::to_string(index + 1);
 }
 
 Recorder::Recorder(const RecorderParameters& parameters) : m_parameters(parameters)
@@ -76,8 +83,24 @@ void Recorder::record(const ProcedureFrame& f)
     if (pressed && (f.input.buttons & ~m_buttons & kWater) != 0) {
         event(f.time, EventKind::LensWash);
     }
+    for (int k = 0; k < 32; ++k) {
+        const std::uint32_t bit = std::uint32_t{1} << k;
+        if ((f.lesionsInView & bit) != (m_lesionsInView & bit)) {
+            event(f.time, (f.lesionsInView & bit) != 0 ? EventKind::LesionInView : EventKind::LesionOutOfView,
+                  lesionName(k));
+        }
+    }
+    m_lesionsInView = f.lesionsInView;
     if (pressed && (f.input.buttons & ~m_buttons & kMarkLesion) != 0) {
-        event(f.time, EventKind::LesionMarked);
+        // The mark names the lesion in view (the first, when several are), or none.
+        std::string detail = "none in view";
+        for (int k = 0; k < 32; ++k) {
+            if ((f.lesionsInView & (std::uint32_t{1} << k)) != 0) {
+                detail = lesionName(k);
+                break;
+            }
+        }
+        event(f.time, EventKind::LesionMarked, detail);
     }
     m_buttons = f.input.buttons;
     // Retroflexion: the tip looks back along the colon (more than 135 degrees).

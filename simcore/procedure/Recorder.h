@@ -22,6 +22,7 @@
 
 #include <Eigen/Core>
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -45,6 +46,7 @@ struct ProcedureFrame {
     double discomfort = 0.0;                                       ///< 0-10
     bool perforation = false;
     LoopKind loop = LoopKind::None;
+    std::uint32_t lesionsInView = 0;  ///< bit k: lesion k of the case is in view (LesionView.h)
     bool inputRejected = false;
     std::string inputRejection;
 };
@@ -72,8 +74,12 @@ enum class EventKind {
     InputRejected,
     DeviceConnected,     ///< detail: the input device's name
     DeviceDisconnected,  ///< detail: the input device's name
+    LesionInView,        ///< detail: "lesion K" (K from 1, the case's order)
+    LesionOutOfView,     ///< detail: "lesion K"
 };
 [[nodiscard]] std::string_view eventName(EventKind kind);
+/// "lesion K" for the lesion of index `index` (K = index + 1), as events name it.
+[[nodiscard]] std::string lesionName(int index);
 
 struct RecordedEvent {
     double time;
@@ -189,6 +195,7 @@ private:
     RecorderParameters m_parameters;
     Recording m_recording;
     double m_nextSample = 0.0;
+    std::uint32_t m_lesionsInView = 0;
     bool m_cecumReached = false;
     bool m_excessive = false;
     bool m_redOut = false;

@@ -62,6 +62,36 @@ TEST(Recorder, SampleValuesAreRoundedToTheDeclaredResolution)
     EXPECT_EQ(quantizeSample(s).tip, s.tip);
 }
 
+TEST(Recorder, LesionsComingIntoViewAndMarksNameTheLesion)
+{
+    Recorder recorder(RecorderParameters{});
+    const auto at = [&](int step, std::uint32_t inView, bool mark) {
+        ProcedureFrame f;
+        f.time = step * 1e-3;
+        f.lesionsInView = inView;
+        f.input.buttons = mark ? kMarkLesion : 0;
+        recorder.record(f);
+    };
+    at(0, 0, true);       // a mark with nothing in view
+    at(1, 0, false);      // released
+    at(2, 0b100, false);  // lesion 3 comes into view
+    at(3, 0b110, true);   // lesion 2 too; the mark names the first in view
+    at(4, 0b010, false);  // lesion 3 leaves
+    const auto& e = recorder.recording().events;
+    ASSERT_EQ(e.size(), 5U);
+    EXPECT_EQ(e[0].kind, EventKind::LesionMarked);
+    EXPECT_EQ(e[0].detail, "none in view");
+    EXPECT_EQ(e[1].kind, EventKind::LesionInView);
+    EXPECT_EQ(e[1].detail, "lesion 3");
+    EXPECT_DOUBLE_EQ(e[1].time, 0.002);
+    EXPECT_EQ(e[2].kind, EventKind::LesionInView);
+    EXPECT_EQ(e[2].detail, "lesion 2");
+    EXPECT_EQ(e[3].kind, EventKind::LesionMarked);
+    EXPECT_EQ(e[3].detail, "lesion 2");
+    EXPECT_EQ(e[4].kind, EventKind::LesionOutOfView);
+    EXPECT_EQ(e[4].detail, "lesion 3");
+}
+
 TEST(Recorder, EventsFireOnceOnEachEdgeAtTheExactStep)
 {
     RecorderParameters p;

@@ -36,7 +36,12 @@ procedure::Recording handMade()
                 {4.0, EventKind::CecumReached, ""},
                 {6.0, EventKind::RedOutStart, ""},
                 {7.0, EventKind::RedOutEnd, ""},
-                {8.0, EventKind::LesionMarked, ""}};
+                {7.5, EventKind::LesionInView, "lesion 2"},
+                {8.0, EventKind::LesionMarked, "lesion 2"},
+                {8.2, EventKind::LesionOutOfView, "lesion 2"},
+                {8.5, EventKind::LesionMarked, "none in view"},
+                {9.0, EventKind::LesionInView, "lesion 1"},
+                {9.5, EventKind::LesionOutOfView, "lesion 1"}};
     return r;
 }
 
@@ -67,8 +72,12 @@ TEST(Metrics, FromAHandMadeRecording)
     EXPECT_DOUBLE_EQ(m.at("discomfort_peak"), 7.0);
     EXPECT_NEAR(m.at("discomfort_moderate_share"), 0.2, dt / 10.0);
     EXPECT_EQ(m.at("perforation"), 0.0);
+    // Lesion 2 marked 0.5 s after it came into view; lesion 1 seen, never
+    // marked; one mark with nothing in view.
     EXPECT_EQ(m.at("lesions_detected"), 1.0);
     EXPECT_EQ(m.at("lesions_missed"), 1.0);
+    EXPECT_DOUBLE_EQ(m.at("time_to_detection"), 0.5);
+    EXPECT_EQ(m.at("false_lesion_marks"), 1.0);
     EXPECT_NEAR(m.at("tip_path_length"), 0.5 + 0.2, 1e-9);
     EXPECT_NEAR(m.at("insertion_efficiency"), 1.0, 1e-9);
     EXPECT_DOUBLE_EQ(m.at("max_insertion"), 0.5);

@@ -19,6 +19,7 @@
 #include "scoring/SessionMetrics.h"
 #include "simcore/geometry/ProceduralColon.h"
 #include "simcore/procedure/Operator.h"
+#include "trainer_ui/cli/CaseArgument.h"
 #include "trainer_ui/cli/CommandLine.h"
 #include "trainer_ui/cli/Commands.h"
 #include "trainer_ui/cli/RecordsAccess.h"
@@ -146,9 +147,7 @@ int runDemo(std::span<char* const> args)
 
     // 2. the expert operator
     const cases::SceneSpec scene = cases::toScene(theCase);
-    procedure::ProcedureSettings settings;
-    settings.tissue = scene.tissue;
-    settings.environment = scene.environment;
+    const procedure::ProcedureSettings settings = procedureSettingsFor(scene);
     const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(scene.anatomy);
     procedure::ProcedureLoop loop(anatomy, settings);
     const qint64 session = open.records->beginSession(student, caseId, kDemoTask, "scripted:expert");

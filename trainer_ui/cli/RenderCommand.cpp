@@ -203,8 +203,7 @@ int runRender(std::span<char* const> args)
         const cases::Case theCase = readCaseArgument(*caseFile);
         const cases::SceneSpec scene = cases::toScene(theCase);
         anatomyParameters = scene.anatomy;
-        settings.tissue = scene.tissue;
-        settings.environment = scene.environment;
+        settings = procedureSettingsFor(scene);
         findings = findingsOf(scene);
     }
 

@@ -149,8 +149,8 @@ int runProcedure(std::span<char* const> args)
     }
     const std::string task = checkTask(line.value("--task").value_or("navigation-straight"));
 
-    // A generated case sets the anatomy, the wall and the environment; its
-    // lesions, diverticula and adhesions are not yet part of the loop's physics.
+    // A generated case sets the anatomy, the wall, the environment and the
+    // lesions' places (procedureSettingsFor).
     procedure::ProcedureSettings settings;
     geometry::AnatomyParameters anatomyParameters;
     int lesionsPresent = 0;
@@ -159,8 +159,7 @@ int runProcedure(std::span<char* const> args)
         lesionsPresent = static_cast<int>(theCase.lesions.size());
         const cases::SceneSpec scene = cases::toScene(theCase);
         anatomyParameters = scene.anatomy;
-        settings.tissue = scene.tissue;
-        settings.environment = scene.environment;
+        settings = procedureSettingsFor(scene);
     }
     const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(anatomyParameters);
     procedure::ProcedureLoop loop(anatomy, settings);
