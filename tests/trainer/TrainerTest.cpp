@@ -22,6 +22,7 @@
 #include <QComboBox>
 #include <QDir>
 #include <QDoubleSpinBox>
+#include <QElapsedTimer>
 #include <QLabel>
 #include <QLineEdit>
 #include <QProgressBar>
@@ -160,10 +161,13 @@ app::ProcedureScreen* startProcedure(app::MainWindow& window, app::Driver driver
 {
     click(window, "openBrief");
     EXPECT_EQ(screenName(window), "taskBrief");
-    auto* choice = child<QComboBox>(window, "driverChoice");
-    choice->setCurrentIndex(choice->findData(static_cast<int>(driver)));
-    child<QDoubleSpinBox>(window, "timeLimit")->setValue(timeLimit);
-    click(window, "startProcedure");
+    QWidget& brief = *window.currentScreen();
+    auto* choice = child<QComboBox>(brief, "driverChoice");
+    const int index = choice->findData(static_cast<int>(driver));
+    EXPECT_GE(index, 0);
+    choice->setCurrentIndex(index);
+    child<QDoubleSpinBox>(brief, "timeLimit")->setValue(timeLimit);
+    click(brief, "startProcedure");
     return qobject_cast<app::ProcedureScreen*>(window.currentScreen());
 }
 
@@ -203,10 +207,22 @@ TEST(Trainer, AStudentTakesTheFirstTaskSeesTheResultsAndReplaysIt)
     ASSERT_NE(procedure, nullptr);
     const qint64 session = procedure->session();
     auto* view = child<app::EndoscopeViewWidget>(window, "endoscopeView");
-    QTRY_VERIFY_WITH_TIMEOUT(procedure->shownInsertion() > 0.03 && view->framesDrawn() > 10, kLongWait);
+    QTRY_VERIFY_WITH_TIMEOUT(view->framesDrawn() > 0, kLongWait);
     EXPECT_TRUE(view->failure().isEmpty()) << view->failure().toStdString();
-    std::cout << "procedure screen: graphics " << procedure->graphicsRate() << " frames/s, physics "
-              << procedure->physicsRate() << " steps/s\n";
+    // The figures (printed, never asserted): frames drawn and loop steps per wall-clock second
+    // from the first frame until 3.5 s simulated.
+    QElapsedTimer wall;
+    wall.start();
+    const long frames0 = procedure->framesDrawn();
+    const double time0 = procedure->shownTime();
+    QTRY_VERIFY_WITH_TIMEOUT(procedure->shownTime() >= 3.5, kLongWait);
+    const double seconds = static_cast<double>(wall.elapsed()) / 1000.0;
+    std::cout << "procedure screen over " << seconds << " s: graphics "
+              << static_cast<double>(procedure->framesDrawn() - frames0) / seconds << " frames/s, physics "
+              << 1000.0 * (procedure->shownTime() - time0) / seconds
+              << " steps/s (HUD: " << procedure->graphicsRate() << " frames/s, " << procedure->physicsRate()
+              << " steps/s)\n";
+    EXPECT_GT(procedure->shownInsertion(), 0.03);
     screenshot(window, "procedure");
     QTRY_COMPARE_WITH_TIMEOUT(screenName(window), QStringLiteral("resultsScreen"), kLongWait);
 

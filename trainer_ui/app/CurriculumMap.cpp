@@ -78,7 +78,14 @@ CurriculumMap::CurriculumMap(AppContext& context, QWidget* parent)
     m_tree->setRootIsDecorated(true);
     connect(m_tree, &QTreeWidget::itemDoubleClicked, this, &CurriculumMap::openSelected);
     connect(m_tree, &QTreeWidget::itemSelectionChanged, this, &CurriculumMap::selectionChanged);
+    m_tree->setStyleSheet(QStringLiteral("QTreeWidget::item { padding: 4px; }"));
     layout->addWidget(m_tree, 1);
+    m_preview = new QLabel;
+    m_preview->setObjectName(QStringLiteral("taskPreview"));
+    m_preview->setWordWrap(true);
+    m_preview->setMinimumHeight(60);
+    m_preview->setAlignment(Qt::AlignTop | Qt::AlignLeft);
+    layout->addWidget(m_preview);
     auto* buttons = new QHBoxLayout;
     buttons->addStretch();
     m_open = new QPushButton(tr("Open the task brief"));
@@ -175,6 +182,26 @@ void CurriculumMap::selectionChanged()
     const curricula::Task* task = id.empty() ? nullptr : m_curriculum.find(id);
     const std::string state = task != nullptr ? stateOf(id) : std::string();
     m_open->setEnabled(task != nullptr && task->available && (state == "unlocked" || state == "proficient"));
+    if (task == nullptr) {
+        m_preview->setText(tr("Select a task to see what it asks."));
+        return;
+    }
+    QString why;
+    if (!task->available) {
+        why =
+            tr("Not available yet: %1.").arg(QString::fromStdString(task->unavailableReason).toHtmlEscaped());
+    } else if (state == "locked") {
+        QStringList needed;
+        for (const std::string& prerequisite : task->prerequisites) {
+            if (const curricula::Task* before = m_curriculum.find(prerequisite)) {
+                needed << QString::fromStdString(before->title).toHtmlEscaped();
+            }
+        }
+        why = tr("Locked until you are proficient in: %1.").arg(needed.join(tr(", ")));
+    }
+    m_preview->setText(tr("<b>%1</b>: %2 %3")
+                           .arg(QString::fromStdString(task->title).toHtmlEscaped(),
+                                QString::fromStdString(task->instructions).toHtmlEscaped(), why));
 }
 
 void CurriculumMap::openSelected()

@@ -50,6 +50,7 @@ private:
     std::optional<std::string> m_next;
     QTreeWidget* m_tree = nullptr;
     QLabel* m_summary = nullptr;
+    QLabel* m_preview = nullptr;  ///< the selected task: what it asks, or why it is closed
     QPushButton* m_open = nullptr;
 };
 

@@ -10,7 +10,7 @@ namespace colonosim::app {
 EndoscopeViewWidget::EndoscopeViewWidget(std::shared_ptr<const ProcedureScene> scene, QWidget* parent)
     : QOpenGLWidget(parent), m_scene(std::move(scene))
 {
-    setMinimumSize(480, 360);
+    setFixedSize(kWidth, kHeight);
     m_clock.start();
 }
 
@@ -54,10 +54,13 @@ void EndoscopeViewWidget::paintGL()
     m_view->setWallPositions(m_visual);
     m_view->render({m_snapshot->tip.position, m_snapshot->tip.rotation}, {m_snapshot->lensSoiling, 0.0},
                    width, height, defaultFramebufferObject());
+    if (m_frames == 0) {
+        m_clock.restart();  // the rate counts from the first frame drawn
+    }
     ++m_frames;
     ++m_windowFrames;
     const double elapsed = static_cast<double>(m_clock.elapsed()) / 1000.0;
-    if (elapsed >= 1.0) {
+    if (elapsed >= 0.5) {
         m_fps = static_cast<double>(m_windowFrames) / elapsed;
         m_windowFrames = 0;
         m_clock.restart();

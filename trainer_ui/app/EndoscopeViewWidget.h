@@ -19,12 +19,16 @@ namespace colonosim::app {
 class EndoscopeViewWidget : public QOpenGLWidget {
     Q_OBJECT
 public:
+    /// The view's size in pixels: the video of a standard-definition endoscope (4:3).
+    static constexpr int kWidth = 640;
+    static constexpr int kHeight = 480;
+
     EndoscopeViewWidget(std::shared_ptr<const ProcedureScene> scene, QWidget* parent = nullptr);
     ~EndoscopeViewWidget() override;
 
     /// The snapshot to draw next (must stay valid until the next call); schedules a repaint.
     void showSnapshot(const Snapshot* snapshot);
-    /// Frames drawn per wall-clock second, over the last second.
+    /// Frames drawn per wall-clock second, over the last half second or more.
     [[nodiscard]] double framesPerSecond() const { return m_fps; }
     /// Frames drawn since the widget was made.
     [[nodiscard]] long framesDrawn() const { return m_frames; }

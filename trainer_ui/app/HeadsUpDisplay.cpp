@@ -30,6 +30,7 @@ QProgressBar* gauge(const char* name, int maximum)
     bar->setRange(0, maximum);
     bar->setTextVisible(false);
     bar->setMinimumWidth(180);
+    bar->setMaximumWidth(320);
     return bar;
 }
 
@@ -99,7 +100,8 @@ void HeadsUpDisplay::showSnapshot(const Snapshot& snapshot, double graphicsRate,
 {
     const procedure::ProcedureFrame& frame = snapshot.frame;
     m_depth->setText(tr("%1 cm").arg(frame.input.insertion * 100.0, 0, 'f', 1));
-    const double force = frame.handleForce;
+    // Below the display's resolution a force reads 0.0, never -0.0.
+    const double force = std::abs(frame.handleForce) < 0.05 ? 0.0 : frame.handleForce;
     m_force->setValue(static_cast<int>(std::clamp(std::abs(force), 0.0, kForceScale) * 10.0));
     colour(m_force, std::abs(force) >= m_excessiveForce ? "#e0463c" : "#3fa34d");
     m_forceText->setText(
@@ -114,9 +116,14 @@ void HeadsUpDisplay::showSnapshot(const Snapshot& snapshot, double graphicsRate,
             ? QStringLiteral("color: #3fa34d; font-weight: bold;")
             : QStringLiteral("color: white; background: #c0392b; font-weight: bold; padding: 2px;"));
     m_timer->setText(tr("%1 of %2").arg(clock(frame.time), clock(timeLimit)));
-    m_rates->setText(tr("graphics %1 frames/s · physics %2 Hz")
-                         .arg(graphicsRate, 0, 'f', 0)
-                         .arg(snapshot.physicsRate, 0, 'f', 0));
+    m_rates->setText(
+        snapshot.state == Snapshot::State::Running
+            ? tr("graphics %1 frames/s · physics %2 Hz")
+                  .arg(graphicsRate, 0, 'f', 0)
+                  .arg(snapshot.physicsRate, 0, 'f', 0)
+            : tr("graphics %1 frames/s · physics %2")
+                  .arg(graphicsRate, 0, 'f', 0)
+                  .arg(snapshot.state == Snapshot::State::Paused ? tr("paused") : tr("stopped")));
 }
 
 }  // namespace colonosim::app

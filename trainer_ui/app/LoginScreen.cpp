@@ -14,13 +14,11 @@ LoginScreen::LoginScreen(db::Records& records, QWidget* parent) : QWidget(parent
     auto* outer = new QVBoxLayout(this);
     outer->addStretch();
     auto* box = new QWidget;
-    box->setMaximumWidth(460);
+    box->setFixedWidth(480);
     auto* layout = new QVBoxLayout(box);
-    auto* title =
-        new QLabel(tr("<h1>colonosim</h1><p>Colonoscopy training: log in with the name and password "
-                      "your administrator gave you.</p>"));
-    title->setWordWrap(true);
-    layout->addWidget(title);
+    layout->addWidget(new QLabel(tr("<h1>colonosim</h1>")));
+    layout->addWidget(new QLabel(tr("Colonoscopy training. Log in with the name and password")));
+    layout->addWidget(new QLabel(tr("your administrator gave you.")));
     auto* form = new QFormLayout;
     m_name = new QLineEdit;
     m_name->setObjectName(QStringLiteral("loginName"));

@@ -150,6 +150,7 @@ void MainWindow::pop()
     m_stack->setCurrentWidget(m_screens.back());
     m_stack->removeWidget(top);
     top->hide();
+    top->setParent(nullptr);  // out of the window's children at once; deleted when control returns
     top->deleteLater();
 }
 

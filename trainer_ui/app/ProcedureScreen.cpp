@@ -60,7 +60,7 @@ ProcedureScreen::ProcedureScreen(AppContext& context, const curricula::Task& tas
     m_view->setObjectName(QStringLiteral("endoscopeView"));
     m_view->setFocusPolicy(Qt::NoFocus);
     m_view->installEventFilter(this);
-    row->addWidget(m_view, 3);
+    row->addWidget(m_view, 0, Qt::AlignTop);
     auto* side = new QVBoxLayout;
     if (task.shapeView) {
         m_shapeCaption = new QLabel(tr("Scope shape — anterior | lateral (from the patient's left)"));
@@ -69,7 +69,7 @@ ProcedureScreen::ProcedureScreen(AppContext& context, const curricula::Task& tas
         m_shape = new ShapeViewWidget(m_scene);
         m_shape->setObjectName(QStringLiteral("shapeView"));
         m_shape->setFocusPolicy(Qt::NoFocus);
-        side->addWidget(m_shape, 1);
+        side->addWidget(m_shape);
     }
     m_hud = new HeadsUpDisplay(m_scene->settings.recorder.excessiveForce);
     side->addWidget(m_hud);
@@ -79,15 +79,16 @@ ProcedureScreen::ProcedureScreen(AppContext& context, const curricula::Task& tas
     connect(end, &QPushButton::clicked, this, &ProcedureScreen::endProcedure);
     side->addWidget(end);
     side->addStretch();
-    row->addLayout(side, 2);
-    layout->addLayout(row, 1);
+    row->addLayout(side, 1);
+    layout->addLayout(row);
+    layout->addStretch(1);
     m_status = new QLabel;
     m_status->setObjectName(QStringLiteral("procedureStatus"));
     layout->addWidget(m_status);
     auto* legend =
         new QLabel(options.driver == Driver::Keyboard
                        ? KeyboardControls::legend()
-                       : tr("Driven by %1. Esc ends the procedure.").arg(QString::fromStdString(device)));
+                       : tr("<b>Input</b>: %1. Esc ends the procedure.").arg(QString::fromStdString(device)));
     legend->setObjectName(QStringLiteral("keyLegend"));
     legend->setWordWrap(true);
     layout->addWidget(legend);
@@ -107,6 +108,16 @@ ProcedureScreen::~ProcedureScreen() = default;
 double ProcedureScreen::shownInsertion() const
 {
     return m_runner->snapshot().frame.input.insertion;
+}
+
+double ProcedureScreen::shownTime() const
+{
+    return m_runner->snapshot().frame.time;
+}
+
+long ProcedureScreen::framesDrawn() const
+{
+    return m_view->framesDrawn();
 }
 
 double ProcedureScreen::graphicsRate() const

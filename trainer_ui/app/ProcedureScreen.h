@@ -60,6 +60,10 @@ public:
     [[nodiscard]] qint64 session() const { return m_session; }
     /// The insertion shown now, m (what the HUD shows).
     [[nodiscard]] double shownInsertion() const;
+    /// The simulated time shown now, s.
+    [[nodiscard]] double shownTime() const;
+    /// Endoscope-view frames drawn so far.
+    [[nodiscard]] long framesDrawn() const;
     [[nodiscard]] double graphicsRate() const;
     [[nodiscard]] double physicsRate() const;
     /// Ends the procedure as Esc does.

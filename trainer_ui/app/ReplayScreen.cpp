@@ -65,16 +65,18 @@ ReplayScreen::ReplayScreen(AppContext& context, qint64 session, QWidget* parent)
     auto* views = new QHBoxLayout;
     m_view = new EndoscopeViewWidget(m_scene);
     m_view->setObjectName(QStringLiteral("replayEndoscopeView"));
-    views->addWidget(m_view, 3);
+    views->addWidget(m_view, 0, Qt::AlignTop);
     auto* side = new QVBoxLayout;
     side->addWidget(new QLabel(tr("Scope shape — anterior | lateral (from the patient's left)")));
     m_shape = new ShapeViewWidget(m_scene);
     m_shape->setObjectName(QStringLiteral("replayShapeView"));
-    side->addWidget(m_shape, 1);
+    side->addWidget(m_shape);
     m_hud = new HeadsUpDisplay(m_scene->settings.recorder.excessiveForce);
     side->addWidget(m_hud);
-    views->addLayout(side, 2);
-    layout->addLayout(views, 1);
+    side->addStretch(1);
+    views->addLayout(side, 1);
+    layout->addLayout(views);
+    layout->addStretch(1);
 
     auto* controls = new QHBoxLayout;
     auto* playButton = new QPushButton(tr("Play"));

@@ -10,6 +10,7 @@ ShapeViewWidget::ShapeViewWidget(std::shared_ptr<const ProcedureScene> scene, QW
     : QOpenGLWidget(parent), m_scene(std::move(scene))
 {
     setMinimumSize(320, 160);
+    setMaximumSize(560, 280);
 }
 
 ShapeViewWidget::~ShapeViewWidget()

@@ -89,6 +89,7 @@ void SimulationRunner::run(std::stop_token stop)
     double anchorSpeed = m_speed.load();
     bool wasPaused = m_paused.load();
     bool seeking = m_options.seekTo > 0.0;
+    bool pausePublished = false;
     Clock::time_point windowStart = anchorWall;
     long windowSteps = 0;
     double rate = 0.0;
@@ -111,9 +112,9 @@ void SimulationRunner::run(std::stop_token stop)
             windowSteps = 0;
         }
         if (paused) {
-            if (secondsBetween(lastPublish, now) >= publishInterval) {
+            if (!pausePublished) {  // a paused loop does not change: one snapshot says so
                 publish(Snapshot::State::Paused, 0.0);
-                lastPublish = now;
+                pausePublished = true;
             }
             std::this_thread::sleep_for(std::chrono::milliseconds(2));
             continue;
@@ -127,6 +128,7 @@ void SimulationRunner::run(std::stop_token stop)
                 continue;
             }
         }
+        pausePublished = false;
         if (hdc != nullptr) {
             hdc->recordConnection(loop);
         }
@@ -146,6 +148,7 @@ void SimulationRunner::run(std::stop_token stop)
             seeking = false;
             m_paused.store(true, std::memory_order_release);
             publish(Snapshot::State::Paused, rate);
+            pausePublished = true;
             lastPublish = now;
             continue;
         }

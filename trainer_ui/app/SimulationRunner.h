@@ -5,7 +5,8 @@
 /// for replays), or as fast as it can up to a seek target. Input comes in
 /// through the Operator (ManualOperator: a triple buffer from the UI);
 /// outputs go out as a Snapshot through a triple buffer, published at most
-/// kPublishRate times per wall-clock second, which the UI polls.
+/// kPublishRate times per wall-clock second (once while paused), which the
+/// UI polls.
 ///
 /// The loop is built on the runner's thread (settling the colon takes a
 /// moment). When the run ends (the operator finished, the time limit, or

@@ -68,7 +68,7 @@ TaskBrief::TaskBrief(AppContext& context, const curricula::Task& task, std::opti
     m_history->setWordWrap(true);
     m_history->setTextFormat(Qt::RichText);
     m_history->setAlignment(Qt::AlignTop | Qt::AlignLeft);
-    patientLayout->addWidget(m_history, 1);
+    patientLayout->addWidget(m_history);
     auto* another = new QPushButton(tr("Another patient for this task"));
     another->setObjectName(QStringLiteral("anotherCase"));
     connect(another, &QPushButton::clicked, this,
@@ -90,9 +90,10 @@ TaskBrief::TaskBrief(AppContext& context, const curricula::Task& task, std::opti
     text->setObjectName(QStringLiteral("taskInstructions"));
     text->setWordWrap(true);
     text->setAlignment(Qt::AlignTop | Qt::AlignLeft);
-    aimsLayout->addWidget(text, 1);
+    aimsLayout->addWidget(text);
+    aimsLayout->addStretch(1);
     columns->addWidget(aims, 1);
-    layout->addLayout(columns, 1);
+    layout->addLayout(columns);
 
     auto* how = new QGroupBox(tr("How you will drive the scope"));
     auto* form = new QFormLayout(how);
@@ -117,6 +118,12 @@ TaskBrief::TaskBrief(AppContext& context, const curricula::Task& task, std::opti
     m_timeLimit->setSuffix(tr(" s"));
     form->addRow(tr("End the procedure after"), m_timeLimit);
     layout->addWidget(how);
+    layout->addStretch(1);
+    const auto portForHaptic = [this] {
+        m_port->setEnabled(static_cast<Driver>(m_driver->currentData().toInt()) == Driver::Haptic);
+    };
+    connect(m_driver, &QComboBox::currentIndexChanged, this, portForHaptic);
+    portForHaptic();
 
     auto* buttons = new QHBoxLayout;
     auto* back = new QPushButton(tr("Back to the curriculum"));
