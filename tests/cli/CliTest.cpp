@@ -71,6 +71,18 @@ TEST(Cli, UnknownIntegratorIsRefusedWithTheAllowedNames)
     EXPECT_NE(r.output.find("symplectic_euler"), std::string::npos) << r.output;
 }
 
+TEST(Cli, WithoutADisplayNoSubcommandRunsHeadlessAndTheWindowIsRefused)
+{
+    const std::string noDisplay =
+        std::string("env -u DISPLAY -u WAYLAND_DISPLAY -u QT_QPA_PLATFORM ") + COLONOSIM_EXECUTABLE;
+    const Result headless = colonosim::testing::runCommand(noDisplay, "");
+    EXPECT_EQ(headless.status, 0) << headless.output;
+    EXPECT_NE(headless.output.find("visual mapping"), std::string::npos) << headless.output;
+    const Result window = colonosim::testing::runCommand(noDisplay, "gui");
+    EXPECT_EQ(window.status, 2) << window.output;
+    EXPECT_NE(window.output.find("needs a display"), std::string::npos) << window.output;
+}
+
 TEST(Cli, DemoRunsAndReportsJson)
 {
     const Result r = run("demo --duration 0.06 --json", true);

@@ -295,6 +295,9 @@ TEST(Trainer, AStudentTakesTheFirstTaskSeesTheResultsAndReplaysIt)
     EXPECT_EQ(procedure->shownInsertion(), 0.0);
     QTest::keyPress(procedure, Qt::Key_Up);
     QTRY_VERIFY_WITH_TIMEOUT(procedure->shownInsertion() > 0.01, kLongWait);
+    QTRY_VERIFY_WITH_TIMEOUT(!std::isnan(procedure->inputLatency()), kLongWait);
+    std::cout << "input to display (Up key to the first frame drawn with the scope moved): "
+              << procedure->inputLatency() << " ms\n";
     QTest::keyRelease(procedure, Qt::Key_Up);
     QTest::keyClick(procedure, Qt::Key_Escape);
     QTRY_COMPARE_WITH_TIMEOUT(screenName(window), QStringLiteral("resultsScreen"), kLongWait);

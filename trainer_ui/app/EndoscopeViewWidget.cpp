@@ -54,6 +54,8 @@ void EndoscopeViewWidget::paintGL()
     m_view->setWallPositions(m_visual);
     m_view->render({m_snapshot->tip.position, m_snapshot->tip.rotation}, {m_snapshot->lensSoiling, 0.0},
                    width, height, defaultFramebufferObject());
+    m_lastFrameAt = std::chrono::steady_clock::now();
+    m_lastFrameInsertion = m_snapshot->frame.input.insertion;
     if (m_frames == 0) {
         m_clock.restart();  // the rate counts from the first frame drawn
     }

@@ -12,6 +12,7 @@
 #include <QElapsedTimer>
 #include <QOpenGLWidget>
 
+#include <chrono>
 #include <memory>
 
 namespace colonosim::app {
@@ -32,6 +33,9 @@ public:
     [[nodiscard]] double framesPerSecond() const { return m_fps; }
     /// Frames drawn since the widget was made.
     [[nodiscard]] long framesDrawn() const { return m_frames; }
+    /// The last frame drawn: when it was finished (steady clock) and the insertion it shows (m).
+    [[nodiscard]] std::chrono::steady_clock::time_point lastFrameAt() const { return m_lastFrameAt; }
+    [[nodiscard]] double lastFrameInsertion() const { return m_lastFrameInsertion; }
     /// When the view failed to start (no OpenGL 3.3): the reason, as a sentence.
     [[nodiscard]] const QString& failure() const { return m_failure; }
 
@@ -50,6 +54,8 @@ private:
     long m_frames = 0;
     long m_windowFrames = 0;
     double m_fps = 0.0;
+    std::chrono::steady_clock::time_point m_lastFrameAt;
+    double m_lastFrameInsertion = 0.0;
 };
 
 }  // namespace colonosim::app

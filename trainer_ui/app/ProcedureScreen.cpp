@@ -156,6 +156,9 @@ void ProcedureScreen::keyPressEvent(QKeyEvent* event)
         m_manual->press(buttons);
         return;
     }
+    if (event->key() == Qt::Key_Up && !m_probe) {
+        m_probe = LatencyProbe{std::chrono::steady_clock::now(), m_view->lastFrameInsertion()};
+    }
     if (m_keys.keyDown(event->key())) {
         sendControls();
         return;
@@ -209,6 +212,12 @@ void ProcedureScreen::tick()
         m_hud->showSnapshot(now, m_view->framesPerSecond(), m_options.timeLimit);
         m_status->setText(now.state == Snapshot::State::Preparing ? tr("Preparing the colon…")
                                                                   : tr("Procedure running."));
+    }
+    if (m_probe && m_view->lastFrameAt() > m_probe->pressed &&
+        m_view->lastFrameInsertion() > m_probe->insertion) {
+        m_inputLatency =
+            std::chrono::duration<double, std::milli>(m_view->lastFrameAt() - m_probe->pressed).count();
+        m_probe.reset();
     }
     if (m_runner->finished() && !m_done) {
         finish();

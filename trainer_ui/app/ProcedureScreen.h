@@ -18,6 +18,8 @@
 
 #include <QWidget>
 
+#include <chrono>
+#include <limits>
 #include <memory>
 #include <optional>
 
@@ -66,6 +68,9 @@ public:
     [[nodiscard]] long framesDrawn() const;
     [[nodiscard]] double graphicsRate() const;
     [[nodiscard]] double physicsRate() const;
+    /// Input-to-display latency of the last insertion key press: from the key press to the end of
+    /// the first endoscope frame drawn with the scope moved, ms (NaN until measured).
+    [[nodiscard]] double inputLatency() const { return m_inputLatency; }
     /// Ends the procedure as Esc does.
     void endProcedure();
 
@@ -101,6 +106,12 @@ private:
     QLabel* m_status = nullptr;
     QTimer* m_timer = nullptr;
     bool m_done = false;
+    struct LatencyProbe {
+        std::chrono::steady_clock::time_point pressed;
+        double insertion;  ///< m, shown when the key went down
+    };
+    std::optional<LatencyProbe> m_probe;
+    double m_inputLatency = std::numeric_limits<double>::quiet_NaN();
 };
 
 }  // namespace colonosim::app

@@ -82,7 +82,6 @@ public:
     [[nodiscard]] bool finished() const { return m_finished.load(std::memory_order_acquire); }
     /// After finished(): the loop (null when it could not be built).
     [[nodiscard]] const procedure::ProcedureLoop* loop() const;
-    [[nodiscard]] procedure::Operator& driver() { return *m_driver; }
     [[nodiscard]] const ProcedureScene& scene() const { return *m_scene; }
 
 private:

@@ -44,6 +44,11 @@ int runTrainer(std::span<char* const> args)
                      "COLONOSIM_ADMIN_PASSWORD, or one chosen in the first-start dialog.\n";
         return 0;
     }
+    if (!displayAvailable()) {
+        throw cli::UsageError(
+            "the trainer window needs a display (DISPLAY, WAYLAND_DISPLAY or QT_QPA_PLATFORM "
+            "set); without one, use the headless subcommands (colonosim --help)");
+    }
     useOpenGl33Core();
     static int argc = 1;
     static char name[] = "colonosim";
