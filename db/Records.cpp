@@ -443,6 +443,37 @@ QByteArray Records::sessionRecording(const Actor& actor, qint64 session)
     return query.value(2).toByteArray();
 }
 
+QByteArray Records::sessionTrace(const Actor& actor, qint64 session)
+{
+    QSqlQuery query =
+        run(m_database.connection(),
+            QStringLiteral("SELECT s.user_id, u.name, s.trace FROM sessions s JOIN users u ON u.id = "
+                           "s.user_id WHERE s.id = ?"),
+            {session});
+    if (!query.next()) {
+        throw DatabaseError("session " + std::to_string(session) + " does not exist");
+    }
+    requireReadable(actor, query.value(0).toLongLong(), s(query.value(1)));
+    return query.value(2).toByteArray();
+}
+
+std::optional<std::string> Records::sessionCase(const Actor& actor, qint64 session)
+{
+    QSqlQuery query =
+        run(m_database.connection(),
+            QStringLiteral("SELECT s.user_id, u.name, c.xml FROM sessions s JOIN users u ON u.id = "
+                           "s.user_id LEFT JOIN cases c ON c.id = s.case_id WHERE s.id = ?"),
+            {session});
+    if (!query.next()) {
+        throw DatabaseError("session " + std::to_string(session) + " does not exist");
+    }
+    requireReadable(actor, query.value(0).toLongLong(), s(query.value(1)));
+    if (query.value(2).isNull()) {
+        return std::nullopt;
+    }
+    return s(query.value(2));
+}
+
 std::vector<CurvePoint> Records::learningCurve(const Actor& actor, const std::string& user,
                                                const std::string& metric)
 {

@@ -131,6 +131,11 @@ public:
     /// Completed sessions of `user`, oldest first, with metrics and scores.
     [[nodiscard]] std::vector<SessionRow> sessions(const Actor& actor, const std::string& user);
     [[nodiscard]] QByteArray sessionRecording(const Actor& actor, qint64 session);
+    /// The stored input trace of a session (encodeStoredTrace), for replay;
+    /// readable by whoever may read its recording.
+    [[nodiscard]] QByteArray sessionTrace(const Actor& actor, qint64 session);
+    /// The case XML a session ran on (none: the default colon); same rule as sessionTrace.
+    [[nodiscard]] std::optional<std::string> sessionCase(const Actor& actor, qint64 session);
     /// One metric of one trainee across their completed sessions (the dashboard query).
     [[nodiscard]] std::vector<CurvePoint> learningCurve(const Actor& actor, const std::string& user,
                                                         const std::string& metric);

@@ -1,11 +1,13 @@
 /// \file
-/// `colonosim`: with no arguments, the trainer (until the trainer issue lands,
-/// the headless demonstration); with a subcommand, a headless tool.
+/// `colonosim`: with no arguments, the trainer window when a display exists
+/// (else the headless demonstration); `colonosim gui [--db FILE]` or
+/// `colonosim --db FILE` for the window; with a subcommand, a headless tool.
 /// Exit status: 0 success, 1 failure of the run itself, 2 bad input.
 
 #include "simcore/devices/Gamepad.h"
 #include "simcore/geometry/MeshImport.h"
 #include "simcore/params/Parameter.h"
+#include "trainer_ui/app/TrainerApp.h"
 #include "trainer_ui/cli/CommandLine.h"
 #include "trainer_ui/cli/Commands.h"
 
@@ -19,8 +21,10 @@ void printUsage()
 {
     std::cout
         << "usage: colonosim [SUBCOMMAND] [OPTIONS]\n"
-           "With no subcommand: the headless demonstration (the trainer arrives later).\n"
+           "With no subcommand: the trainer window when a display exists (DISPLAY, WAYLAND_DISPLAY or\n"
+           "QT_QPA_PLATFORM set), else the headless demonstration.\n"
            "Subcommands (each has --help):\n"
+           "  gui         the trainer window: gui [--db FILE] (also: colonosim --db FILE)\n"
            "  demo        headless demonstration: generate a case, run the expert, score it into the\n"
            "              records, write the PDF report (demo --tissue: the tissue physics alone)\n"
            "  params      declared physical parameters with units, ranges and sources\n"
@@ -47,9 +51,16 @@ int main(int argc, char** argv)
 {
     using namespace colonosim;
     const std::span<char* const> all(argv, static_cast<size_t>(argc));
-    const std::string command = argc > 1 ? argv[1] : "demo";
-    const std::span<char* const> rest = argc > 1 ? all.subspan(2) : all.subspan(1);
+    const std::string first = argc > 1 ? argv[1] : "";
+    // No subcommand: the window where one can be shown; options alone (--db FILE) mean the window too.
+    const bool window = first == "gui" || first.starts_with("--db") || (argc == 1 && app::displayAvailable());
+    const std::string command = window ? "gui" : (argc > 1 ? first : "demo");
+    const bool named = argc > 1 && !first.starts_with("--db");  // a subcommand word comes first
+    const std::span<char* const> rest = named ? all.subspan(2) : all.subspan(1);
     try {
+        if (command == "gui") {
+            return app::runTrainer(rest);
+        }
         if (command == "--help" || command == "-h" || command == "help") {
             printUsage();
             return 0;

@@ -71,6 +71,16 @@ TEST(Cli, UnknownIntegratorIsRefusedWithTheAllowedNames)
     EXPECT_NE(r.output.find("symplectic_euler"), std::string::npos) << r.output;
 }
 
+TEST(Cli, WithoutADisplayTheWindowIsRefused)
+{
+    // (That no subcommand runs the headless demonstration is checked in DemoCliTest: it takes a while.)
+    const std::string noDisplay =
+        std::string("env -u DISPLAY -u WAYLAND_DISPLAY -u QT_QPA_PLATFORM ") + COLONOSIM_EXECUTABLE;
+    const Result window = colonosim::testing::runCommand(noDisplay, "gui");
+    EXPECT_EQ(window.status, 2) << window.output;
+    EXPECT_NE(window.output.find("needs a display"), std::string::npos) << window.output;
+}
+
 TEST(Cli, DemoRunsAndReportsJson)
 {
     const Result r = run("demo --tissue --duration 0.06 --json", true);

@@ -26,6 +26,25 @@ std::string firstBytes(const std::filesystem::path& file, size_t n)
     return bytes;
 }
 
+TEST(Demo, NoSubcommandWithoutADisplayRunsItOnTheDefaultDatabaseCreatedOnFirstStart)
+{
+    // The README's run command on a machine with no display: a fresh home, so
+    // the default database is created, seeded and used.
+    test::TempDir home;
+    const std::string command =
+        "env -u DISPLAY -u WAYLAND_DISPLAY -u QT_QPA_PLATFORM -u XDG_DATA_HOME HOME=" + home.path().string() +
+        " COLONOSIM_ADMIN_PASSWORD= " + COLONOSIM_EXECUTABLE;
+    const colonosim::testing::Result r = colonosim::testing::runCommand(command, "");
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("administrator \"admin\" created with the password"), std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find("4. report: "), std::string::npos) << r.output;
+    const auto database = home.path() / ".local/share/colonosim/records.sqlite";
+    ASSERT_TRUE(std::filesystem::exists(database)) << r.output;
+    const auto report = home.path() / ".local/share/colonosim/demo/demo-student-report.pdf";
+    EXPECT_EQ(firstBytes(report, 5), "%PDF-");
+}
+
 TEST(Demo, GeneratesRunsScoresAndReports)
 {
     test::TempDir dir;

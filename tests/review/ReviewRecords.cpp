@@ -6,7 +6,7 @@
 #include "simcore/geometry/ProceduralColon.h"
 #include "simcore/procedure/Operator.h"
 #include "trainer_ui/cli/RecordsAccess.h"
-#include "trainer_ui/cli/StoredSession.h"
+#include "trainer_ui/cli/SessionStore.h"
 
 #include <random>
 

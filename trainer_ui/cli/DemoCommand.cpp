@@ -23,7 +23,7 @@
 #include "trainer_ui/cli/CommandLine.h"
 #include "trainer_ui/cli/Commands.h"
 #include "trainer_ui/cli/RecordsAccess.h"
-#include "trainer_ui/cli/StoredSession.h"
+#include "trainer_ui/cli/SessionStore.h"
 #include "trainer_ui/reports/TraineeReport.h"
 
 #include <nlohmann/json.hpp>
@@ -164,9 +164,8 @@ int runDemo(std::span<char* const> args)
     scoring::ScoringContext context;
     context.colonLength = settings.recorder.colonLength;
     context.lesionsPresent = static_cast<int>(theCase.lesions.size());
-    db::SessionResult result = storedSession(loop);
-    scoreInto(*open.records, student, kDemoTask, scoring::computeMetrics(loop.recording(), context), result);
-    open.records->completeSession(student, session, result);
+    const db::SessionResult result =
+        completeStoredSession(*open.records, student, session, kDemoTask, loop, context);
     log << "3. session " << session << " of " << kDemoStudent << " stored with " << result.metrics.size()
         << " metrics, task " << kDemoTask << ", "
         << (result.scores.contains("composite")

@@ -38,6 +38,14 @@ struct OpenRecords {
     std::optional<db::Actor> firstAdministrator;
 };
 
+/// The name under which the core curriculum is stored.
+inline constexpr const char* kCoreCurriculum = "colonoscopy-core";
+
+/// First start of a database with no user: creates the first administrator
+/// `administrator` with `password` and stores the core curriculum. Both the
+/// command line and the trainer's first-start dialog seed through here.
+db::Actor seedFirstStart(db::Records& records, const std::string& administrator, const std::string& password);
+
 /// Opens `--db` or the default; on first start seeds it, writing the one-time
 /// notice to `notices`.
 [[nodiscard]] OpenRecords openRecords(const CommandLine& line, std::ostream& notices);

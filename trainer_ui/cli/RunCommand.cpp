@@ -10,7 +10,6 @@
 /// metrics, scores and the user's progress (see RecordsAccess.h for authentication).
 
 #include "case_generator/SceneSpec.h"
-#include "curricula/Curriculum.h"
 #include "scoring/SessionMetrics.h"
 #include "simcore/devices/Gamepad.h"
 #include "simcore/devices/HdcOperator.h"
@@ -20,7 +19,7 @@
 #include "trainer_ui/cli/CommandLine.h"
 #include "trainer_ui/cli/Commands.h"
 #include "trainer_ui/cli/RecordsAccess.h"
-#include "trainer_ui/cli/StoredSession.h"
+#include "trainer_ui/cli/SessionStore.h"
 
 #include <nlohmann/json.hpp>
 
@@ -67,27 +66,6 @@ nlohmann::json summarise(const procedure::Recording& recording, double duration)
     return out;
 }
 
-/// The curriculum task a stored session belongs to; UsageError listing the runnable ones.
-std::string checkTask(const std::string& id)
-{
-    const auto curriculum =
-        curricula::parseCurriculum(curricula::coreCurriculumXml(), "colonoscopy-core.xml");
-    const curricula::Task* task = curriculum.value->find(id);
-    std::string runnable;
-    for (const curricula::Task& t : curriculum.value->tasks) {
-        if (t.available) {
-            runnable += (runnable.empty() ? "" : ", ") + t.id;
-        }
-    }
-    if (!task) {
-        throw UsageError("--task = " + id + " is not a task of colonoscopy-core (allowed: " + runnable + ")");
-    }
-    if (!task->available) {
-        throw UsageError("--task = " + id + " cannot be run yet: " + task->unavailableReason +
-                         " (allowed: " + runnable + ")");
-    }
-    return id;
-}
 }  // namespace
 
 int runProcedure(std::span<char* const> args)
@@ -209,9 +187,8 @@ int runProcedure(std::span<char* const> args)
         scoring::ScoringContext context;
         context.colonLength = settings.recorder.colonLength;
         context.lesionsPresent = lesionsPresent;
-        db::SessionResult result = storedSession(loop);
-        scoreInto(*records.records, actor, task, scoring::computeMetrics(loop.recording(), context), result);
-        records.records->completeSession(actor, session, result);
+        const db::SessionResult result =
+            completeStoredSession(*records.records, actor, session, task, loop, context);
         summary["session"] = session;
         summary["task"] = task;
         summary["scores"] = result.scores;
