@@ -429,12 +429,14 @@ std::vector<SessionRow> Records::sessions(const Actor& actor, const std::string&
     return out;
 }
 
-QByteArray Records::sessionRecording(const Actor& actor, qint64 session)
+QByteArray Records::sessionBlob(const Actor& actor, qint64 session, SessionBlob which)
 {
+    const QString column =
+        which == SessionBlob::Recording ? QStringLiteral("recording") : QStringLiteral("trace");
     QSqlQuery query =
         run(m_database.connection(),
-            QStringLiteral("SELECT s.user_id, u.name, s.recording FROM sessions s JOIN users u ON u.id = "
-                           "s.user_id WHERE s.id = ?"),
+            QStringLiteral("SELECT s.user_id, u.name, s.") + column +
+                QStringLiteral(" FROM sessions s JOIN users u ON u.id = s.user_id WHERE s.id = ?"),
             {session});
     if (!query.next()) {
         throw DatabaseError("session " + std::to_string(session) + " does not exist");
@@ -443,18 +445,14 @@ QByteArray Records::sessionRecording(const Actor& actor, qint64 session)
     return query.value(2).toByteArray();
 }
 
+QByteArray Records::sessionRecording(const Actor& actor, qint64 session)
+{
+    return sessionBlob(actor, session, SessionBlob::Recording);
+}
+
 QByteArray Records::sessionTrace(const Actor& actor, qint64 session)
 {
-    QSqlQuery query =
-        run(m_database.connection(),
-            QStringLiteral("SELECT s.user_id, u.name, s.trace FROM sessions s JOIN users u ON u.id = "
-                           "s.user_id WHERE s.id = ?"),
-            {session});
-    if (!query.next()) {
-        throw DatabaseError("session " + std::to_string(session) + " does not exist");
-    }
-    requireReadable(actor, query.value(0).toLongLong(), s(query.value(1)));
-    return query.value(2).toByteArray();
+    return sessionBlob(actor, session, SessionBlob::Trace);
 }
 
 std::optional<std::string> Records::sessionCase(const Actor& actor, qint64 session)

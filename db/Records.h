@@ -155,6 +155,9 @@ public:
     void backup(const Actor& actor, const std::filesystem::path& destination);
 
 private:
+    enum class SessionBlob { Recording, Trace };
+    /// One stored column of a session, read under requireReadable.
+    [[nodiscard]] QByteArray sessionBlob(const Actor& actor, qint64 session, SessionBlob which);
     [[nodiscard]] qint64 userId(const std::string& name);
     [[nodiscard]] qint64 cohortId(const std::string& name);
     void requireAdministrator(const Actor& actor, const std::string& operation);

@@ -57,6 +57,7 @@ TEST(HdcEndToEnd, TheSimulatedDeviceDrivesAnExpertRunThroughTheHdc)
     procedure::InputSample input;
     double inputTime = 0.0;
     bool connected = false;
+    int knownConnection = 0;
     long frames = 0;
     double largestLag = 0.0;
     std::unique_ptr<SimulatedDevice> secondDevice;
@@ -70,8 +71,17 @@ TEST(HdcEndToEnd, TheSimulatedDeviceDrivesAnExpertRunThroughTheHdc)
             second = std::make_unique<HdcController>(*secondDevice, parameters, "127.0.0.1", server.port());
             secondThread = std::jthread([&](std::stop_token stop) { second->run(stop, 60.0); });
         }
-        if (server.connected() != connected) {
-            connected = server.connected();
+        // As HdcOperator::recordConnection: a link replaced between two
+        // steps is a disconnection and a connection (the server counts them).
+        const bool now = server.connected();
+        const int connection = server.connections();
+        if (connected && connection != knownConnection) {
+            connected = false;
+            loop.noteDevice("simulated", false);
+        }
+        if (now != connected) {
+            connected = now;
+            knownConnection = connection;
             loop.noteDevice("simulated", connected);
         }
         if (step == 0 || step == kSteps / 2 + 1) {

@@ -29,6 +29,16 @@ QString valueText(double value, std::string_view unit)
     return text;
 }
 
+/// A metric's name as a person reads it: "max_handle_force" -> "Max handle force".
+QString metricLabel(std::string_view name)
+{
+    QString label = QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size())).replace(u'_', u' ');
+    if (!label.isEmpty()) {
+        label[0] = label[0].toUpper();
+    }
+    return label;
+}
+
 QTableWidgetItem* cell(const QString& text)
 {
     auto* item = new QTableWidgetItem(text);
@@ -110,9 +120,11 @@ ResultsScreen::ResultsScreen(AppContext& context, qint64 session, const curricul
         }
         const int row = m_table->rowCount();
         m_table->insertRow(row);
-        m_table->setItem(
-            row, 0,
-            cell(QString::fromUtf8(definition.help.data(), static_cast<qsizetype>(definition.help.size()))));
+        const QString help =
+            QString::fromUtf8(definition.help.data(), static_cast<qsizetype>(definition.help.size()));
+        QTableWidgetItem* metric = cell(metricLabel(definition.name));
+        metric->setToolTip(help);
+        m_table->setItem(row, 0, metric);
         m_table->setItem(row, 1, cell(valueText(value->second, definition.unit)));
         const bool benchmarked = benchmarks && benchmarks->metrics.contains(name);
         if (!benchmarked) {
@@ -131,10 +143,8 @@ ResultsScreen::ResultsScreen(AppContext& context, qint64 session, const curricul
         verdict->setForeground(pass ? QColor(30, 125, 50) : QColor(179, 38, 30));
         m_table->setItem(row, 3, verdict);
         if (!pass) {
-            improvements << QStringLiteral("<li><b>%1</b>: %2</li>")
-                                .arg(QString::fromUtf8(definition.help.data(),
-                                                       static_cast<qsizetype>(definition.help.size()))
-                                         .toHtmlEscaped(),
+            improvements << QStringLiteral("<li><b>%1</b> (%2): %3</li>")
+                                .arg(metricLabel(definition.name).toHtmlEscaped(), help.toHtmlEscaped(),
                                      adviceFor(definition.name).toHtmlEscaped());
         }
     }
