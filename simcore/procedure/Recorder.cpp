@@ -1,5 +1,6 @@
 #include "simcore/procedure/Recorder.h"
 
+#include <bit>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -83,23 +84,16 @@ void Recorder::record(const ProcedureFrame& f)
     if (pressed && (f.input.buttons & ~m_buttons & kWater) != 0) {
         event(f.time, EventKind::LensWash);
     }
-    for (int k = 0; k < 32; ++k) {
-        const std::uint32_t bit = std::uint32_t{1} << k;
-        if ((f.lesionsInView & bit) != (m_lesionsInView & bit)) {
-            event(f.time, (f.lesionsInView & bit) != 0 ? EventKind::LesionInView : EventKind::LesionOutOfView,
-                  lesionName(k));
-        }
+    for (std::uint32_t changed = f.lesionsInView ^ m_lesionsInView; changed != 0; changed &= changed - 1) {
+        const int k = std::countr_zero(changed);  // lowest changed lesion first
+        const bool inView = (f.lesionsInView & (std::uint32_t{1} << k)) != 0;
+        event(f.time, inView ? EventKind::LesionInView : EventKind::LesionOutOfView, lesionName(k));
     }
     m_lesionsInView = f.lesionsInView;
     if (pressed && (f.input.buttons & ~m_buttons & kMarkLesion) != 0) {
         // The mark names the lesion in view (the first, when several are), or none.
-        std::string detail = "none in view";
-        for (int k = 0; k < 32; ++k) {
-            if ((f.lesionsInView & (std::uint32_t{1} << k)) != 0) {
-                detail = lesionName(k);
-                break;
-            }
-        }
+        const std::string detail = f.lesionsInView != 0 ? lesionName(std::countr_zero(f.lesionsInView))
+                                                        : std::string("none in view");
         event(f.time, EventKind::LesionMarked, detail);
     }
     m_buttons = f.input.buttons;
