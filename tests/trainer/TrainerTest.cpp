@@ -43,6 +43,19 @@ using namespace colonosim;
 constexpr int kLongWait =
     180000;  ///< ms: a generous bound for work on a loaded machine (never a timing check)
 
+/// Waits, processing events, until `condition` holds (at most kLongWait),
+/// then asserts it. QtTest's QTRY_* macros report a failure to QtTest and
+/// return, which GoogleTest counts as a pass; this fails the test.
+#define ASSERT_SOON(condition)                                                                               \
+    do {                                                                                                     \
+        QElapsedTimer waited;                                                                                \
+        waited.start();                                                                                      \
+        while (!(condition) && waited.elapsed() < kLongWait) {                                               \
+            QTest::qWait(10);                                                                                \
+        }                                                                                                    \
+        ASSERT_TRUE(condition) << "still false: " #condition;                                                \
+    } while (false)
+
 void screenshot(QWidget& widget, const QString& name)
 {
     QDir().mkpath(QStringLiteral(COLONOSIM_SCREENSHOT_DIR));
@@ -207,7 +220,7 @@ TEST(Trainer, AStudentTakesTheFirstTaskSeesTheResultsAndReplaysIt)
     ASSERT_NE(procedure, nullptr);
     const qint64 session = procedure->session();
     auto* view = child<app::EndoscopeViewWidget>(window, "endoscopeView");
-    QTRY_VERIFY_WITH_TIMEOUT(view->framesDrawn() > 0, kLongWait);
+    ASSERT_SOON(view->framesDrawn() > 0);
     EXPECT_TRUE(view->failure().isEmpty()) << view->failure().toStdString();
     // The figures (printed, never asserted): frames drawn and loop steps per wall-clock second
     // from the first frame until 3.5 s simulated.
@@ -215,7 +228,7 @@ TEST(Trainer, AStudentTakesTheFirstTaskSeesTheResultsAndReplaysIt)
     wall.start();
     const long frames0 = procedure->framesDrawn();
     const double time0 = procedure->shownTime();
-    QTRY_VERIFY_WITH_TIMEOUT(procedure->shownTime() >= 3.5, kLongWait);
+    ASSERT_SOON(procedure->shownTime() >= 3.5);
     const double seconds = static_cast<double>(wall.elapsed()) / 1000.0;
     std::cout << "procedure screen over " << seconds << " s: graphics "
               << static_cast<double>(procedure->framesDrawn() - frames0) / seconds << " frames/s, physics "
@@ -224,7 +237,7 @@ TEST(Trainer, AStudentTakesTheFirstTaskSeesTheResultsAndReplaysIt)
               << " steps/s)\n";
     EXPECT_GT(procedure->shownInsertion(), 0.03);
     screenshot(window, "procedure");
-    QTRY_COMPARE_WITH_TIMEOUT(screenName(window), QStringLiteral("resultsScreen"), kLongWait);
+    ASSERT_SOON(screenName(window) == QStringLiteral("resultsScreen"));
 
     // Results: every metric with its benchmark, stored as completed.
     auto* table = child<QTableWidget>(window, "metricTable");
@@ -251,11 +264,11 @@ TEST(Trainer, AStudentTakesTheFirstTaskSeesTheResultsAndReplaysIt)
     auto* replay = qobject_cast<app::ReplayScreen*>(window.currentScreen());
     ASSERT_NE(replay, nullptr);
     ASSERT_TRUE(replay->failure().isEmpty()) << replay->failure().toStdString();
-    QTRY_VERIFY_WITH_TIMEOUT(replay->shown()->state == app::Snapshot::State::Paused, kLongWait);
+    ASSERT_SOON(replay->shown()->state == app::Snapshot::State::Paused);
     click(window, "replayPlay");
-    QTRY_VERIFY_WITH_TIMEOUT(replay->shown()->frame.time > 0.5, kLongWait);
+    ASSERT_SOON(replay->shown()->frame.time > 0.5);
     click(window, "replayPause");
-    QTRY_VERIFY_WITH_TIMEOUT(replay->shown()->state == app::Snapshot::State::Paused, kLongWait);
+    ASSERT_SOON(replay->shown()->state == app::Snapshot::State::Paused);
     QTest::qWait(200);  // let both views draw the paused frame
     screenshot(window, "replay");
 
@@ -266,7 +279,7 @@ TEST(Trainer, AStudentTakesTheFirstTaskSeesTheResultsAndReplaysIt)
     click(window, "seekButton");
     EXPECT_TRUE(replay->seeking());
     EXPECT_TRUE(child<QProgressBar>(window, "seekProgress")->isVisible());
-    QTRY_VERIFY_WITH_TIMEOUT(!replay->seeking(), kLongWait);
+    ASSERT_SOON(!replay->seeking());
     const app::Snapshot* landed = replay->shown();
     EXPECT_EQ(landed->state, app::Snapshot::State::Paused);
     EXPECT_EQ(landed->frame.time, target.time);
@@ -290,27 +303,44 @@ TEST(Trainer, AStudentTakesTheFirstTaskSeesTheResultsAndReplaysIt)
     QTest::qWait(300);
     EXPECT_EQ(replay->shown()->frame.time, target.time);
     click(window, "closeReplay");
-    QTRY_COMPARE_WITH_TIMEOUT(screenName(window), QStringLiteral("resultsScreen"), kLongWait);
+    ASSERT_SOON(screenName(window) == QStringLiteral("resultsScreen"));
 
     // The keyboard path: holding Up inserts the scope; Esc ends and stores the session.
     click(window, "backToCurriculum");
     ASSERT_EQ(screenName(window), "studentHome");
     procedure = startProcedure(window, app::Driver::Keyboard, 600.0);
     ASSERT_NE(procedure, nullptr);
-    QTRY_VERIFY_WITH_TIMEOUT(child<QLabel>(window, "procedureStatus")->text().contains("running"), kLongWait);
+    ASSERT_SOON(child<QLabel>(window, "procedureStatus")->text().contains("running"));
     EXPECT_EQ(procedure->shownInsertion(), 0.0);
     QTest::keyPress(procedure, Qt::Key_Up);
-    QTRY_VERIFY_WITH_TIMEOUT(procedure->shownInsertion() > 0.01, kLongWait);
-    QTRY_VERIFY_WITH_TIMEOUT(!std::isnan(procedure->inputLatency()), kLongWait);
+    ASSERT_SOON(procedure->shownInsertion() > 0.01);
+    ASSERT_SOON(!std::isnan(procedure->inputLatency()));
     std::cout << "input to display (Up key to the first frame drawn with the scope moved): "
               << procedure->inputLatency() << " ms\n";
     QTest::keyRelease(procedure, Qt::Key_Up);
+
+    // The mouse path: dragging up on the endoscope view inserts further; a
+    // release stops the feed.
+    QWidget* dragged = child<QWidget>(window, "endoscopeView");
+    ASSERT_NE(dragged, nullptr);
+    const QPoint grab = dragged->rect().center();
+    ASSERT_SOON(procedure->shownInsertion() > 0.0);
+    const double beforeDrag = procedure->shownInsertion();
+    QTest::mousePress(dragged, Qt::LeftButton, {}, grab);
+    QTest::mouseMove(dragged, grab - QPoint(0, 150));  // full deflection: kDragPixels up
+    ASSERT_SOON(procedure->shownInsertion() > beforeDrag + 0.01);
+    QTest::mouseRelease(dragged, Qt::LeftButton, {}, grab - QPoint(0, 150));
+    QTest::qWait(300);  // let the release reach the loop and the display
+    const double released = procedure->shownInsertion();
+    QTest::qWait(500);
+    EXPECT_NEAR(procedure->shownInsertion(), released, 1e-3);  // no feed without a drag
+
     QTest::keyClick(procedure, Qt::Key_Escape);
-    QTRY_COMPARE_WITH_TIMEOUT(screenName(window), QStringLiteral("resultsScreen"), kLongWait);
+    ASSERT_SOON(screenName(window) == QStringLiteral("resultsScreen"));
     const std::vector<db::SessionRow> after = fixture.records.sessions(ada, "ada");
     ASSERT_EQ(after.size(), 2u);
     EXPECT_EQ(after[1].device, "keyboard");
-    EXPECT_GT(after[1].metrics.at("max_insertion"), 0.01);
+    EXPECT_GT(after[1].metrics.at("max_insertion"), 0.02);  // keys, then the mouse
 }
 
 }  // namespace
