@@ -31,6 +31,24 @@ procedure::LoopKind loopFromDetail(const std::string& detail)
     }
     return procedure::LoopKind::None;
 }
+
+/// Length of the union of the intervals of `a` and `b` after `from`
+/// (overlapping red-out and cleaning count once).
+double unionAfter(std::vector<std::pair<double, double>> a, const std::vector<std::pair<double, double>>& b,
+                  double from)
+{
+    a.insert(a.end(), b.begin(), b.end());
+    std::sort(a.begin(), a.end());
+    double total = 0.0, reached = from;
+    for (const auto& [start, stop] : a) {
+        const double lo = std::max(start, reached);
+        if (stop > lo) {
+            total += stop - lo;
+            reached = stop;
+        }
+    }
+    return total;
+}
 }  // namespace
 
 MetricValues computeMetrics(const procedure::Recording& recording, const ScoringContext& context)
@@ -44,8 +62,8 @@ MetricValues computeMetrics(const procedure::Recording& recording, const Scoring
 
     // Events: cecum, red-out intervals, loops, perforation, lesion marks.
     double cecum = -1.0;
-    std::vector<std::pair<double, double>> redOuts;
-    double redOutStart = -1.0;
+    std::vector<std::pair<double, double>> redOuts, cleanings;
+    double redOutStart = -1.0, cleaningStart = -1.0;
     int loops = 0, reduced = 0, falseMarks = 0;
     std::map<std::string, double> firstInView, firstMark;  // by lesion name
     bool perforation = false;
@@ -65,6 +83,13 @@ MetricValues computeMetrics(const procedure::Recording& recording, const Scoring
             if (redOutStart >= 0.0) {
                 redOuts.emplace_back(redOutStart, e.time);
                 redOutStart = -1.0;
+            }
+            break;
+        case procedure::EventKind::CleaningStart: cleaningStart = e.time; break;
+        case procedure::EventKind::CleaningEnd:
+            if (cleaningStart >= 0.0) {
+                cleanings.emplace_back(cleaningStart, e.time);
+                cleaningStart = -1.0;
             }
             break;
         case procedure::EventKind::LoopFormed: {
@@ -91,12 +116,12 @@ MetricValues computeMetrics(const procedure::Recording& recording, const Scoring
     if (redOutStart >= 0.0) {
         redOuts.emplace_back(redOutStart, end);
     }
-    double redOutTime = 0.0, redOutAfterCecum = 0.0;
+    if (cleaningStart >= 0.0) {
+        cleanings.emplace_back(cleaningStart, end);
+    }
+    double redOutTime = 0.0;
     for (const auto& [a, b] : redOuts) {
         redOutTime += b - a;
-        if (cecum >= 0.0) {
-            redOutAfterCecum += std::max(0.0, b - std::max(a, cecum));
-        }
     }
     auto inRedOut = [&](double t) {
         return std::any_of(redOuts.begin(), redOuts.end(),
@@ -108,7 +133,8 @@ MetricValues computeMetrics(const procedure::Recording& recording, const Scoring
         m["time_to_cecum"] = cecum;
     }
     m["withdrawal_time"] = cecum >= 0.0 ? end - cecum : 0.0;
-    m["effective_withdrawal_time"] = cecum >= 0.0 ? std::max(0.0, end - cecum - redOutAfterCecum) : 0.0;
+    m["effective_withdrawal_time"] =
+        cecum >= 0.0 ? std::max(0.0, end - cecum - unionAfter(redOuts, cleanings, cecum)) : 0.0;
     m["clear_view"] = end > 0.0 ? 1.0 - redOutTime / end : 0.0;
     m["red_out_count"] = static_cast<double>(redOuts.size());
     m["loop_count"] = loops;
