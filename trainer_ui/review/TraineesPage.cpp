@@ -39,6 +39,7 @@ void TraineesPage::reload()
                                         QStringLiteral("Last composite"), QStringLiteral("Cecal intubation"),
                                         QStringLiteral("Certification rules met")});
     const std::vector<db::CohortRow> cohorts = db::readableCohorts(m_context.database, m_context.actor);
+    const db::ActiveRuleSet rules = db::CertificationRules(m_context.database).active(m_context.actor);
     int trainees = 0;
     for (const db::CohortRow& cohort : cohorts) {
         auto* group = new QStandardItem(QString::fromStdString(cohort.name));
@@ -54,7 +55,7 @@ void TraineesPage::reload()
             QList<QStandardItem*> row{new QStandardItem(QString::fromStdString(member))};
             try {
                 const auto& sessions = m_cache.of(member);
-                const nlohmann::json progress = reports::progressReport(sessions, member);
+                const nlohmann::json progress = reports::progressReport(sessions, member, rules);
                 row.append(new QStandardItem(QString::number(sessions.size())));
                 QString composite = QStringLiteral("not scored");
                 if (!sessions.empty() && sessions.back().scores.contains("composite")) {
