@@ -11,6 +11,7 @@
 #include <QListWidget>
 #include <QPushButton>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -44,7 +45,6 @@ RuleSetBox::RuleSetBox(AppContext& context, QWidget* parent)
     m_status->setWordWrap(true);
     m_problems->setObjectName(QStringLiteral("ruleSetProblems"));
     m_problems->setWordWrap(true);
-    m_problems->setMaximumHeight(90);
     m_problems->hide();
     QFont bold = m_active->font();
     bold.setBold(true);
@@ -136,6 +136,9 @@ void RuleSetBox::import()
         for (const std::string& e : rejected.errors()) {
             m_problems->addItem(CurriculumPage::sentence(e));
         }
+        // As tall as its problems, up to four of them; the rest scroll.
+        const int rows = std::min(m_problems->count(), 4);
+        m_problems->setFixedHeight(rows * m_problems->sizeHintForRow(0) + 2 * m_problems->frameWidth() + 4);
         m_problems->show();
         say(QStringLiteral("%1 was not imported: %2 problem(s) to fix.")
                 .arg(QString::fromStdString(path))
