@@ -4,6 +4,8 @@
 
 #include <QVariant>
 
+#include <algorithm>
+
 namespace colonosim::db {
 
 namespace {
@@ -30,6 +32,13 @@ int newestVersion(QSqlDatabase db)
     return query.value(0).toInt();
 }
 
+/// The line of the <certification> element (the file was parsed: it is there).
+int rootLine(const std::string& xml)
+{
+    const auto at = xml.find("<certification");
+    return 1 + static_cast<int>(std::count(xml.begin(), xml.begin() + static_cast<std::ptrdiff_t>(at), '\n'));
+}
+
 }  // namespace
 
 RuleSetVersion CertificationRules::import(const Actor& actor, const std::string& xml,
@@ -46,7 +55,7 @@ RuleSetVersion CertificationRules::import(const Actor& actor, const std::string&
     WriteTransaction tx(db, actor.id);
     const int newest = newestVersion(db);
     if (read.value->version <= newest) {
-        const std::string error = label +
+        const std::string error = label + ":" + std::to_string(rootLine(xml)) +
                                   ": <certification> version = " + std::to_string(read.value->version) +
                                   " is already taken or older: a new rule set needs a version of at least " +
                                   std::to_string(newest + 1);

@@ -84,6 +84,13 @@ TEST_F(RulesCli, ImportActivateAndProgressNamesTheActiveSet)
     ASSERT_EQ(imported.status, 0) << imported.output;
     EXPECT_NE(imported.output.find("imported colonoscopy-simulated version 2 (not active"), std::string::npos)
         << imported.output;
+    const Result again = admin("rules import " + good + " --as admin");
+    EXPECT_EQ(again.status, 2);
+    EXPECT_NE(again.output.find(good +
+                                ":11: <certification> version = 2 is already taken or older: a new rule "
+                                "set needs a version of at least 3"),
+              std::string::npos)
+        << again.output;
     const Result activated = admin("rules activate 2 --as admin");
     ASSERT_EQ(activated.status, 0) << activated.output;
     EXPECT_NE(activated.output.find("active: colonoscopy-simulated version 2"), std::string::npos);

@@ -108,9 +108,10 @@ TEST_F(CertificationRulesTest, AVersionNotAboveTheStoredOnesIsRefused)
             FAIL() << "version " << version << " imported twice or out of order";
         } catch (const db::RuleSetRejected& error) {
             ASSERT_EQ(error.errors().size(), 1U);
-            EXPECT_EQ(error.errors()[0], "again.xml: <certification> version = " + std::to_string(version) +
-                                             " is already taken or older: a new rule set needs a version of "
-                                             "at least 4");
+            EXPECT_EQ(error.errors()[0],
+                      "again.xml:11: <certification> version = " + std::to_string(version) +
+                          " is already taken or older: a new rule set needs a version of "
+                          "at least 4");
         }
     }
     EXPECT_EQ(m_rules.versions(m_admin).size(), 2U);
