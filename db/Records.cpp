@@ -80,7 +80,7 @@ qint64 Records::cohortId(const std::string& name)
     return query.value(0).toLongLong();
 }
 
-void Records::requireAdministrator(const Actor& actor, const std::string& operation)
+void requireAdministrator(const Actor& actor, const std::string& operation)
 {
     if (actor.role != Role::Administrator) {
         throw AccessDenied(actor.name + " (" + roleName(actor.role) + ") may not " + operation +

@@ -45,6 +45,9 @@ public:
     explicit AccessDenied(const std::string& message) : std::runtime_error(message) {}
 };
 
+/// AccessDenied naming the actor, their role and `operation` unless `actor` is an administrator.
+void requireAdministrator(const Actor& actor, const std::string& operation);
+
 class AuthenticationFailed : public std::runtime_error {
 public:
     explicit AuthenticationFailed(const std::string& message) : std::runtime_error(message) {}
@@ -160,7 +163,6 @@ private:
     [[nodiscard]] QByteArray sessionBlob(const Actor& actor, qint64 session, SessionBlob which);
     [[nodiscard]] qint64 userId(const std::string& name);
     [[nodiscard]] qint64 cohortId(const std::string& name);
-    void requireAdministrator(const Actor& actor, const std::string& operation);
     void requireReadable(const Actor& actor, qint64 user, const std::string& userName);
 
     Database& m_database;

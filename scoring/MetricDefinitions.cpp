@@ -19,8 +19,11 @@ constexpr std::array kDefinitions = {
     MetricDefinition{"total_time", "s", Better::Neither, "length of the session", kMentor},
     MetricDefinition{"withdrawal_time", "s", Better::Higher, "from the cecum to the end of the session",
                      kQuality},
-    MetricDefinition{"effective_withdrawal_time", "s", Better::Higher,
-                     "withdrawal time less red-out (wall contact) time", "withdrawal quality studies"},
+    MetricDefinition{
+        "effective_withdrawal_time", "s", Better::Higher,
+        "withdrawal time less red-out (wall contact) and cleaning (water or suction held) time, overlaps "
+        "counted once",
+        "withdrawal quality studies"},
     MetricDefinition{
         "mucosa_visualised", "1", Better::Higher,
         "share of the colon length passed by the tip with a clear view (geometric estimate until the "

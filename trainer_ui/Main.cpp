@@ -37,6 +37,7 @@ void printUsage()
            "  case        patient cases: case generate|validate|stats (randomized from population "
            "statistics)\n"
            "  user        the records' users: user add|list|passwd (authenticate with --as NAME)\n"
+           "  rules       the certification rule sets: rules list|import FILE|activate VERSION --as ADMIN\n"
            "  progress    a trainee's tasks, learning curve and certification rules: progress --user NAME\n"
            "  report      report --user NAME --format pdf|csv|xapi --out FILE; report verify FILE\n"
            "  backup      online backup of the records: backup --out FILE\n"
@@ -88,6 +89,9 @@ int main(int argc, char** argv)
         }
         if (command == "user") {
             return cli::runUser(rest);
+        }
+        if (command == "rules") {
+            return cli::runRules(rest);
         }
         if (command == "progress") {
             return cli::runProgress(rest);

@@ -27,6 +27,8 @@ std::string_view eventName(EventKind kind)
     case EventKind::DeviceDisconnected: return "device_disconnected";
     case EventKind::LesionInView: return "lesion_in_view";
     case EventKind::LesionOutOfView: return "lesion_out_of_view";
+    case EventKind::CleaningStart: return "cleaning_start";
+    case EventKind::CleaningEnd: return "cleaning_end";
     }
     return "unknown";
 }
@@ -83,6 +85,11 @@ void Recorder::record(const ProcedureFrame& f)
     const bool pressed = (f.input.buttons & ~m_buttons) != 0;
     if (pressed && (f.input.buttons & ~m_buttons & kWater) != 0) {
         event(f.time, EventKind::LensWash);
+    }
+    const bool cleaning = (f.input.buttons & (kWater | kSuction)) != 0;
+    if (cleaning != m_cleaning) {
+        event(f.time, cleaning ? EventKind::CleaningStart : EventKind::CleaningEnd);
+        m_cleaning = cleaning;
     }
     for (std::uint32_t changed = f.lesionsInView ^ m_lesionsInView; changed != 0; changed &= changed - 1) {
         const int k = std::countr_zero(changed);  // lowest changed lesion first

@@ -8,7 +8,10 @@
 /// discomfort and loop state. Events, detected on edges of the per-step
 /// frame: cecum reached, loop formed / resolved (with its type), excessive
 /// handle force start / end, perforation, red-out start / end (lens against
-/// the wall), lens wash and lesion marked (button presses), retroflexion
+/// the wall), lens wash and lesion marked (button presses), cleaning start /
+/// end (water or suction held: the first step with either held, the first
+/// step with neither; a session ending while cleaning has no end event and
+/// is closed at its end by whoever reads it), retroflexion
 /// (tip pointing back along the colon), device input rejected, and input
 /// device connected / disconnected (with its name: which device drove the session).
 ///
@@ -76,6 +79,8 @@ enum class EventKind {
     DeviceDisconnected,  ///< detail: the input device's name
     LesionInView,        ///< detail: "lesion K" (K from 1, the case's order)
     LesionOutOfView,     ///< detail: "lesion K"
+    CleaningStart,       ///< water (lens wash / jet) or suction held
+    CleaningEnd,         ///< neither held any more
 };
 [[nodiscard]] std::string_view eventName(EventKind kind);
 /// "lesion K" for the lesion of index `index` (K = index + 1), as events name it.
@@ -199,6 +204,7 @@ private:
     bool m_cecumReached = false;
     bool m_excessive = false;
     bool m_redOut = false;
+    bool m_cleaning = false;
     bool m_retroflexed = false;
     bool m_perforated = false;
     LoopKind m_loop = LoopKind::None;

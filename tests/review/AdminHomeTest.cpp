@@ -2,10 +2,13 @@
 // cohort, reset a password (the user then logs in with it), import a broken
 // curriculum (the message names the line) and a good one, read the rule
 // status, export a trainee's signed PDF and a cohort's CSV with progress,
-// cancel a cohort export (nothing is left), and take a backup that opens
-// with its integrity intact.
+// cancel a cohort export (nothing is left), import a broken certification
+// rule set (the line named) and a good one, activate it and see the version
+// change, and take a backup that opens with its integrity intact.
 #include "trainer_ui/review/AdminHome.h"
+#include "curricula/Certification.h"
 #include "curricula/Curriculum.h"
+#include "db/CertificationRules.h"
 #include "tests/review/ReviewRecords.h"
 #include "tests/review/Screenshot.h"
 
@@ -203,6 +206,63 @@ TEST_F(Admin, SeesRuleStatusAndExportsReports)
         << status("exportStatus").toStdString();
     EXPECT_FALSE(std::filesystem::exists(folder));
     EXPECT_FALSE(std::filesystem::exists(folder.string() + ".partial"));
+}
+
+TEST_F(Admin, ImportsAndActivatesACertificationRuleSet)
+{
+    tabs->setCurrentIndex(2);
+    choose(child<QComboBox>(home, "certTrainee"), QStringLiteral("ada"));
+    EXPECT_TRUE(status("activeRuleSet").startsWith(QStringLiteral("colonoscopy-simulated, version 1")))
+        << status("activeRuleSet").toStdString();
+
+    // A file with a kind that does not exist: nothing stored, the line named.
+    std::string revised = curricula::coreRuleSetXml();
+    const auto swap = [&revised](const std::string& from, const std::string& to) {
+        ASSERT_NE(revised.find(from), std::string::npos) << from;
+        revised.replace(revised.find(from), from.size(), to);
+    };
+    swap("name=\"colonoscopy-simulated\" version=\"1\"", "name=\"colonoscopy-revised\" version=\"2\"");
+    swap("value=\"200\"", "value=\"150\"");
+    swap("at least 200 simulated procedures", "at least 150 simulated procedures");
+    swap("JAG provisional certification: at least 200 procedures",
+         "local revision of the JAG provisional certification: 150 procedures");
+    std::string broken = revised;
+    broken.replace(broken.find("kind=\"none_in_last\""), 19, "kind=\"never\"");
+    const auto brokenFile = data.dir / "broken-rules.xml";
+    std::ofstream(brokenFile) << broken;
+    type(child<QLineEdit>(home, "ruleSetPath"), QString::fromStdString(brokenFile.string()));
+    QTest::mouseClick(child<QPushButton>(home, "importRuleSetButton"), Qt::LeftButton);
+    auto* problems = child<QListWidget>(home, "ruleSetProblems");
+    ASSERT_EQ(problems->count(), 1);
+    EXPECT_TRUE(
+        problems->item(0)->text().startsWith(QStringLiteral("Line 25: kind = \"never\" is not one of")))
+        << problems->item(0)->text().toStdString();
+    EXPECT_TRUE(status("ruleSetStatus").contains(QStringLiteral("was not imported: 1 problem(s) to fix.")));
+    open(2, "admin-3-certification-rules-error");
+
+    // The revised set: imported as version 2, not active until activated.
+    const auto goodFile = data.dir / "revised-rules.xml";
+    std::ofstream(goodFile) << revised;
+    type(child<QLineEdit>(home, "ruleSetPath"), QString::fromStdString(goodFile.string()));
+    QTest::mouseClick(child<QPushButton>(home, "importRuleSetButton"), Qt::LeftButton);
+    EXPECT_TRUE(status("ruleSetStatus").startsWith(QStringLiteral("Imported colonoscopy-revised, version 2")))
+        << status("ruleSetStatus").toStdString();
+    EXPECT_FALSE(problems->isVisible());
+    EXPECT_TRUE(status("activeRuleSet").startsWith(QStringLiteral("colonoscopy-simulated, version 1")));
+    choose(child<QComboBox>(home, "ruleSetVersions"), QStringLiteral("colonoscopy-revised, version 2"));
+    QTest::mouseClick(child<QPushButton>(home, "activateRuleSetButton"), Qt::LeftButton);
+    EXPECT_TRUE(
+        status("activeRuleSet").startsWith(QStringLiteral("colonoscopy-revised, version 2 (imported by")))
+        << status("activeRuleSet").toStdString();
+    EXPECT_TRUE(status("ruleSummary").endsWith(QStringLiteral("(rule set colonoscopy-revised, version 2).")))
+        << status("ruleSummary").toStdString();
+    const auto* rules = child<QTableView>(home, "ruleTable")->model();
+    ASSERT_GE(rules->rowCount(), 1);
+    EXPECT_EQ(rules->index(0, 1).data().toString(), QStringLiteral("at least 150 simulated procedures"));
+    open(2, "admin-3-certification-rules");
+
+    // Back to the shipped set, so the suite's other tests see the records they expect.
+    db::CertificationRules(*data.database).activate(data.admin, 1);
 }
 
 TEST_F(Admin, TakesABackupThatOpensIntact)

@@ -99,6 +99,34 @@ TEST(Metrics, TheCecumNotReachedLeavesTimeToCecumAbsent)
     EXPECT_EQ(m.at("withdrawal_time"), 0.0);
 }
 
+// Effective withdrawal: the cecum at 4 s, the session ends at 10 s; red-out
+// 6-7 s (from handMade) plus the cleaning given here.
+double effectiveWithdrawal(std::vector<procedure::RecordedEvent> cleaning)
+{
+    procedure::Recording r = handMade();
+    r.events.insert(r.events.end(), cleaning.begin(), cleaning.end());
+    return scoring::computeMetrics(r, {}).at("effective_withdrawal_time");
+}
+
+TEST(Metrics, EffectiveWithdrawalLessTheUnionOfRedOutAndCleaning)
+{
+    // Cleaning 6.5-8 s overlaps the red-out 6-7 s: together 6-8 s, 2 s, not 2.5 s.
+    EXPECT_DOUBLE_EQ(
+        effectiveWithdrawal({{6.5, EventKind::CleaningStart, ""}, {8.0, EventKind::CleaningEnd, ""}}), 4.0);
+    // Cleaning 3-4.5 s: only the 0.5 s after the cecum counts; disjoint from the red-out.
+    EXPECT_DOUBLE_EQ(
+        effectiveWithdrawal({{3.0, EventKind::CleaningStart, ""}, {4.5, EventKind::CleaningEnd, ""}}), 4.5);
+    // Cleaning inside the red-out takes nothing more away.
+    EXPECT_DOUBLE_EQ(
+        effectiveWithdrawal({{6.2, EventKind::CleaningStart, ""}, {6.8, EventKind::CleaningEnd, ""}}), 5.0);
+}
+
+TEST(Metrics, ASessionEndingWhileCleaningIsClosedAtTheEnd)
+{
+    // Cleaning from 9 s to the end (10 s) without an end event: 1 s, plus the red-out's 1 s.
+    EXPECT_DOUBLE_EQ(effectiveWithdrawal({{9.0, EventKind::CleaningStart, ""}}), 4.0);
+}
+
 TEST(Benchmarks, MeanSdLimitsAndProficiency)
 {
     const std::vector<scoring::MetricValues> experts = {

@@ -176,7 +176,8 @@ int runDemo(std::span<char* const> args)
 
     // 4. the report
     const std::filesystem::path report = out / (std::string(kDemoStudent) + "-report.pdf");
-    reports::writeFileWhole(report, reports::progressPdf(*open.records, student, kDemoStudent));
+    reports::writeFileWhole(report,
+                            reports::progressPdf(*open.database, *open.records, student, kDemoStudent));
     log << "4. report: " << report.string() << "\n\nrecords: " << database.string()
         << "\nreport:  " << report.string() << '\n';
     if (json) {

@@ -37,7 +37,7 @@ int runProgress(std::span<char* const> args)
     const db::Actor actor = authenticate(*open.records, line, line.value("--as").value_or(*user));
     nlohmann::json report;
     try {
-        report = reports::progressReport(*open.records, actor, *user);
+        report = reports::progressReport(*open.database, *open.records, actor, *user);
     } catch (const db::AccessDenied& error) {
         throw UsageError(std::string("refused: ") + error.what());
     } catch (const db::DatabaseError& error) {
@@ -65,7 +65,7 @@ int runProgress(std::span<char* const> args)
                           : std::string(", competence not yet signalled"))
                   << '\n';
     }
-    std::cout << "\ncertification:\n";
+    std::cout << "\ncertification (rule set " << reports::ruleSetLabel(report) << "):\n";
     for (const auto& r : report["certification"]) {
         std::cout << "  " << (r["met"].get<bool>() ? "met    " : "not met") << "  "
                   << r["description"].get<std::string>() << " (observed "

@@ -133,7 +133,9 @@ std::string pdfReport(const std::vector<db::SessionRow>& sessions, const nlohman
                   QStringLiteral("h: competent"));
         y += chartHeight + 500;
         p.setFont(QFont(QStringLiteral("DejaVu Sans"), 10, QFont::Bold));
-        p.drawText(QRectF(0, y, width, 240), Qt::AlignLeft, QStringLiteral("Certification rules"));
+        p.drawText(
+            QRectF(0, y, width, 240), Qt::AlignLeft,
+            QStringLiteral("Certification rules: %1").arg(QString::fromStdString(ruleSetLabel(progress))));
         y += 300;
         p.setFont(body);
         for (const auto& r : progress["certification"]) {

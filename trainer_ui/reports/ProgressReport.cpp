@@ -1,6 +1,5 @@
 #include "trainer_ui/reports/ProgressReport.h"
 
-#include "curricula/Certification.h"
 #include "curricula/Curriculum.h"
 #include "curricula/Progression.h"
 #include "scoring/LearningCurve.h"
@@ -10,16 +9,18 @@
 
 namespace colonosim::reports {
 
-nlohmann::json progressReport(db::Records& records, const db::Actor& actor, const std::string& user)
+nlohmann::json progressReport(db::Database& database, db::Records& records, const db::Actor& actor,
+                              const std::string& user)
 {
-    return progressReport(records.sessions(actor, user), user);
+    return progressReport(records.sessions(actor, user), user,
+                          db::CertificationRules(database).active(actor));
 }
 
-nlohmann::json progressReport(const std::vector<db::SessionRow>& sessions, const std::string& user)
+nlohmann::json progressReport(const std::vector<db::SessionRow>& sessions, const std::string& user,
+                              const db::ActiveRuleSet& rules)
 {
     const auto curriculum =
         curricula::parseCurriculum(curricula::coreCurriculumXml(), "colonoscopy-core.xml");
-    const auto rules = curricula::parseRuleSet(curricula::coreRuleSetXml(), "certification-rules.xml");
     std::vector<curricula::Attempt> attempts;
     std::vector<scoring::MetricValues> metrics;
     std::vector<bool> failures;
@@ -55,7 +56,8 @@ nlohmann::json progressReport(const std::vector<db::SessionRow>& sessions, const
                              {"lc_cusum_h", parameters.lcLimit()},
                              {"competent_at", curve.competentAt},
                              {"unacceptable_at", curve.unacceptableAt}};
-    for (const curricula::RuleStatus& r : curricula::evaluate(*rules.value, metrics)) {
+    out["certification_rule_set"] = {{"name", rules.stored.name}, {"version", rules.stored.version}};
+    for (const curricula::RuleStatus& r : curricula::evaluate(rules.rules, metrics)) {
         out["certification"].push_back(
             {{"rule", r.rule->id},
              {"description", r.rule->description},
@@ -65,6 +67,12 @@ nlohmann::json progressReport(const std::vector<db::SessionRow>& sessions, const
              {"source", r.rule->source}});
     }
     return out;
+}
+
+std::string ruleSetLabel(const nlohmann::json& progress)
+{
+    const auto& set = progress["certification_rule_set"];
+    return set["name"].get<std::string>() + ", version " + std::to_string(set["version"].get<int>());
 }
 
 std::string observedText(double observed)

@@ -45,7 +45,8 @@ std::string traineeReport(ReportFormat format, db::Database& database, db::Recor
     case ReportFormat::Xapi: return xapiReport(sessions, xapiHome).dump(2) + "\n";
     case ReportFormat::Pdf: break;
     }
-    const nlohmann::json progress = progressReport(sessions, user);
+    const nlohmann::json progress =
+        progressReport(sessions, user, db::CertificationRules(database).active(actor));
     const std::string pdf = pdfReport(sessions, progress, user, PdfIssue{actor.name, true});
     const SigningKey key = signingKey(database.path().string() + ".signing-key");
     const std::string sha = sha256Hex(pdf);
@@ -54,10 +55,12 @@ std::string traineeReport(ReportFormat format, db::Database& database, db::Recor
     return pdf + trailerLine(user, key.publicKeyHex, signature);
 }
 
-std::string progressPdf(db::Records& records, const db::Actor& actor, const std::string& user)
+std::string progressPdf(db::Database& database, db::Records& records, const db::Actor& actor,
+                        const std::string& user)
 {
     const std::vector<db::SessionRow> sessions = records.sessions(actor, user);
-    return pdfReport(sessions, progressReport(sessions, user), user, PdfIssue{actor.name, false});
+    return pdfReport(sessions, progressReport(sessions, user, db::CertificationRules(database).active(actor)),
+                     user, PdfIssue{actor.name, false});
 }
 
 void writeFileWhole(const std::filesystem::path& path, const std::string& bytes)

@@ -33,7 +33,8 @@ enum class ReportFormat { Pdf, Csv, Xapi };
 
 /// The trainee's own progress report as PDF, unsigned and not recorded as a
 /// certificate (anyone who may read the trainee's records).
-[[nodiscard]] std::string progressPdf(db::Records& records, const db::Actor& actor, const std::string& user);
+[[nodiscard]] std::string progressPdf(db::Database& database, db::Records& records, const db::Actor& actor,
+                                      const std::string& user);
 
 /// Writes `bytes` to a temporary file beside `path` and renames it over
 /// `path`, so a reader never sees half a file. Throws std::runtime_error

@@ -5,6 +5,7 @@
 #include "trainer_ui/reports/ProgressReport.h"
 #include "trainer_ui/review/BackgroundJob.h"
 #include "trainer_ui/review/ReadableTrainees.h"
+#include "trainer_ui/review/RuleSetBox.h"
 
 #include <QComboBox>
 #include <QFormLayout>
@@ -24,9 +25,10 @@
 namespace colonosim::app {
 
 CertificationPage::CertificationPage(AppContext& context, QWidget* parent)
-    : LazyPage(parent), m_context(context), m_trainee(new QComboBox), m_rules(new QStandardItemModel(this)),
-      m_table(new QTableView), m_ruleSummary(new QLabel), m_scope(new QComboBox), m_format(new QComboBox),
-      m_path(new QLineEdit), m_export(new QPushButton(QStringLiteral("Export"))),
+    : LazyPage(parent), m_context(context), m_ruleSet(new RuleSetBox(context)), m_trainee(new QComboBox),
+      m_rules(new QStandardItemModel(this)), m_table(new QTableView), m_ruleSummary(new QLabel),
+      m_scope(new QComboBox), m_format(new QComboBox), m_path(new QLineEdit),
+      m_export(new QPushButton(QStringLiteral("Export"))),
       m_cancel(new QPushButton(QStringLiteral("Cancel"))), m_progress(new QProgressBar), m_status(new QLabel),
       m_job(new BackgroundJob(this))
 {
@@ -73,11 +75,13 @@ CertificationPage::CertificationPage(AppContext& context, QWidget* parent)
     form->addRow(m_status);
 
     auto* layout = new QVBoxLayout(this);
+    layout->addWidget(m_ruleSet);
     layout->addLayout(top);
     layout->addWidget(m_ruleSummary);
     layout->addWidget(m_table, 1);
     layout->addWidget(exportBox);
 
+    connect(m_ruleSet, &RuleSetBox::changed, this, &CertificationPage::showRules);
     connect(m_trainee, &QComboBox::currentIndexChanged, this, &CertificationPage::showRules);
     connect(m_scope, &QComboBox::currentIndexChanged, this, &CertificationPage::suggestPath);
     connect(m_format, &QComboBox::currentIndexChanged, this, &CertificationPage::suggestPath);
@@ -137,6 +141,7 @@ void CertificationPage::reload()
         m_trainee->setCurrentIndex(std::max(0, m_trainee->findText(trainee)));
         m_scope->setCurrentIndex(std::max(0, m_scope->findText(scope)));
     }
+    m_ruleSet->reload();
     showRules();
     suggestPath();
 }
@@ -153,7 +158,8 @@ void CertificationPage::showRules()
         return;
     }
     try {
-        const nlohmann::json progress = reports::progressReport(m_context.records, m_context.actor, trainee);
+        const nlohmann::json progress =
+            reports::progressReport(m_context.database, m_context.records, m_context.actor, trainee);
         int met = 0;
         int rules = 0;
         for (const auto& r : progress["certification"]) {
@@ -170,11 +176,12 @@ void CertificationPage::showRules()
             met += ok ? 1 : 0;
         }
         m_ruleSummary->setText(
-            QStringLiteral("%1: %2 completed session(s); %3 of %4 certification rules met.")
+            QStringLiteral("%1: %2 completed session(s); %3 of %4 certification rules met (rule set %5).")
                 .arg(QString::fromStdString(trainee))
                 .arg(progress["completed_sessions"].get<int>())
                 .arg(met)
-                .arg(rules));
+                .arg(rules)
+                .arg(QString::fromStdString(reports::ruleSetLabel(progress))));
         m_table->resizeColumnsToContents();
         m_table->setColumnWidth(1, std::min(m_table->columnWidth(1), 420));
     } catch (const std::exception& e) {

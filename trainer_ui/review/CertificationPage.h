@@ -1,7 +1,8 @@
 #pragma once
 /// \file
-/// Certification for the administrator: the status of every certification
-/// rule for a chosen trainee, and the export of reports (signed PDF, CSV,
+/// Certification for the administrator: the certification rule set of record
+/// (the active one; import and activate, RuleSetBox.h), the status of every
+/// rule of the active set for a chosen trainee, and the export of reports (signed PDF, CSV,
 /// xAPI) for one trainee or a whole cohort. Exports run off the UI thread
 /// with a progress bar and Cancel; a cancelled or failed export leaves no
 /// file behind (reports/CohortExport.h).
@@ -21,6 +22,7 @@ class QTableView;
 namespace colonosim::app {
 
 class BackgroundJob;
+class RuleSetBox;
 
 class CertificationPage : public LazyPage {
     Q_OBJECT
@@ -37,6 +39,7 @@ private:
     void say(const QString& text, bool error = false);
 
     AppContext& m_context;
+    RuleSetBox* m_ruleSet;
     QComboBox* m_trainee;
     QStandardItemModel* m_rules;
     QTableView* m_table;

@@ -1,6 +1,7 @@
 #include "trainer_ui/review/TraineesPage.h"
 #include "trainer_ui/review/TraineeSessions.h"
 
+#include "db/CertificationRules.h"
 #include "db/Cohorts.h"
 #include "trainer_ui/reports/ProgressReport.h"
 
@@ -39,6 +40,15 @@ void TraineesPage::reload()
                                         QStringLiteral("Last composite"), QStringLiteral("Cecal intubation"),
                                         QStringLiteral("Certification rules met")});
     const std::vector<db::CohortRow> cohorts = db::readableCohorts(m_context.database, m_context.actor);
+    // The rules every trainee is judged by; when the active set cannot be read,
+    // the certification column says why instead of a count.
+    db::ActiveRuleSet ruleSet{{0, {}, 0, {}, {}, false}, {}};
+    QString ruleSetProblem;
+    try {
+        ruleSet = db::CertificationRules(m_context.database).active(m_context.actor);
+    } catch (const db::DatabaseError& e) {
+        ruleSetProblem = QString::fromStdString(e.what());
+    }
     int trainees = 0;
     for (const db::CohortRow& cohort : cohorts) {
         auto* group = new QStandardItem(QString::fromStdString(cohort.name));
@@ -54,7 +64,7 @@ void TraineesPage::reload()
             QList<QStandardItem*> row{new QStandardItem(QString::fromStdString(member))};
             try {
                 const auto& sessions = m_cache.of(member);
-                const nlohmann::json progress = reports::progressReport(sessions, member);
+                const nlohmann::json progress = reports::progressReport(sessions, member, ruleSet);
                 row.append(new QStandardItem(QString::number(sessions.size())));
                 QString composite = QStringLiteral("not scored");
                 if (!sessions.empty() && sessions.back().scores.contains("composite")) {
@@ -75,7 +85,9 @@ void TraineesPage::reload()
                     ++rules;
                     met += r["met"].get<bool>() ? 1 : 0;
                 }
-                row.append(new QStandardItem(QStringLiteral("%1 of %2").arg(met).arg(rules)));
+                row.append(new QStandardItem(ruleSetProblem.isEmpty()
+                                                 ? QStringLiteral("%1 of %2").arg(met).arg(rules)
+                                                 : ruleSetProblem));
             } catch (const db::AccessDenied& e) {
                 row.append(new QStandardItem(QString::fromStdString(e.what())));
             }
