@@ -8,6 +8,10 @@
 
 #include <Qt>
 
+#include <QKeySequence>
+
+#include <ostream>
+
 #include <gtest/gtest.h>
 
 #include <thread>
@@ -53,6 +57,14 @@ struct KeyCase {
     double insert, twist, upDown, leftRight;
     std::uint8_t buttons;
 };
+
+/// Names a case by its keys (e.g. "Right+W"), so the test's name says what it holds.
+void PrintTo(const KeyCase& c, std::ostream* out)
+{
+    for (size_t k = 0; k < c.held.size(); ++k) {
+        *out << (k > 0 ? "+" : "") << QKeySequence(c.held[k]).toString().toStdString();
+    }
+}
 
 class Keys : public ::testing::TestWithParam<KeyCase> {};
 
