@@ -10,9 +10,12 @@ namespace colonosim::db {
 
 namespace {
 
-const QString kColumns =
-    QStringLiteral("SELECT r.id, r.name, r.version, coalesce(u.name, ''), r.imported_at, r.active FROM "
-                   "certification_rule_sets r LEFT JOIN users u ON u.id = r.imported_by");
+/// The columns rowOf() reads, and where they come from.
+const QString kFields =
+    QStringLiteral("SELECT r.id, r.name, r.version, coalesce(u.name, ''), r.imported_at, r.active");
+const QString kFrom =
+    QStringLiteral(" FROM certification_rule_sets r LEFT JOIN users u ON u.id = r.imported_by");
+const QString kColumns = kFields + kFrom;
 
 RuleSetVersion rowOf(const QSqlQuery& query)
 {
@@ -113,11 +116,8 @@ std::vector<RuleSetVersion> CertificationRules::versions(const Actor&)
 
 ActiveRuleSet CertificationRules::active(const Actor&)
 {
-    QSqlQuery query = runStatement(
-        m_database.connection(),
-        QStringLiteral(
-            "SELECT r.id, r.name, r.version, coalesce(u.name, ''), r.imported_at, r.active, r.xml FROM "
-            "certification_rule_sets r LEFT JOIN users u ON u.id = r.imported_by WHERE r.active = 1"));
+    QSqlQuery query = runStatement(m_database.connection(), kFields + QStringLiteral(", r.xml") + kFrom +
+                                                                QStringLiteral(" WHERE r.active = 1"));
     if (!query.next()) {
         throw DatabaseError("no certification rule set is active: an administrator activates one");
     }

@@ -86,10 +86,10 @@ void Recorder::record(const ProcedureFrame& f)
     if (pressed && (f.input.buttons & ~m_buttons & kWater) != 0) {
         event(f.time, EventKind::LensWash);
     }
-    const bool cleaning = (f.input.buttons & (kWater | kSuction)) != 0;
-    if (cleaning != m_cleaning) {
+    constexpr std::uint8_t kCleaning = kWater | kSuction;
+    const bool cleaning = (f.input.buttons & kCleaning) != 0;
+    if (cleaning != ((m_buttons & kCleaning) != 0)) {
         event(f.time, cleaning ? EventKind::CleaningStart : EventKind::CleaningEnd);
-        m_cleaning = cleaning;
     }
     for (std::uint32_t changed = f.lesionsInView ^ m_lesionsInView; changed != 0; changed &= changed - 1) {
         const int k = std::countr_zero(changed);  // lowest changed lesion first

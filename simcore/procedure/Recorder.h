@@ -204,7 +204,6 @@ private:
     bool m_cecumReached = false;
     bool m_excessive = false;
     bool m_redOut = false;
-    bool m_cleaning = false;
     bool m_retroflexed = false;
     bool m_perforated = false;
     LoopKind m_loop = LoopKind::None;

@@ -20,7 +20,6 @@
 
 #include <fstream>
 #include <iostream>
-#include <sstream>
 
 namespace colonosim::cli {
 
@@ -28,13 +27,11 @@ namespace {
 
 std::string readFile(const std::string& path)
 {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
+    std::optional<std::string> bytes = reports::readFileWhole(path);
+    if (!bytes) {
         throw UsageError(path + ": cannot be read");
     }
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    return buffer.str();
+    return std::move(*bytes);
 }
 
 void writeFile(const std::string& path, const std::string& bytes)

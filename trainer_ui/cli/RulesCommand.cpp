@@ -10,13 +10,12 @@
 #include "db/CertificationRules.h"
 #include "trainer_ui/cli/Commands.h"
 #include "trainer_ui/cli/RecordsAccess.h"
+#include "trainer_ui/reports/TraineeReport.h"
 
 #include <nlohmann/json.hpp>
 
 #include <charconv>
-#include <fstream>
 #include <iostream>
-#include <sstream>
 
 namespace colonosim::cli {
 
@@ -77,13 +76,11 @@ int runRules(std::span<char* const> args)
     }
     std::string xml;
     if (action == "import") {
-        std::ifstream in(words[1], std::ios::binary);
-        if (!in) {
+        std::optional<std::string> bytes = reports::readFileWhole(words[1]);
+        if (!bytes) {
             throw UsageError(words[1] + ": cannot be read");
         }
-        std::stringstream buffer;
-        buffer << in.rdbuf();
-        xml = buffer.str();
+        xml = std::move(*bytes);
     }
     const int version = action == "activate" ? parseVersion(words[1]) : 0;
     OpenRecords open = openRecords(line, std::cerr);

@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <cstring>
 #include <fstream>
+#include <sstream>
 #include <stdexcept>
 #include <system_error>
 
@@ -61,6 +62,17 @@ std::string progressPdf(db::Database& database, db::Records& records, const db::
     const std::vector<db::SessionRow> sessions = records.sessions(actor, user);
     return pdfReport(sessions, progressReport(sessions, user, db::CertificationRules(database).active(actor)),
                      user, PdfIssue{actor.name, false});
+}
+
+std::optional<std::string> readFileWhole(const std::filesystem::path& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        return std::nullopt;
+    }
+    std::ostringstream bytes;
+    bytes << in.rdbuf();
+    return bytes.str();
 }
 
 void writeFileWhole(const std::filesystem::path& path, const std::string& bytes)

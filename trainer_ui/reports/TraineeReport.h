@@ -15,6 +15,7 @@
 #include "trainer_ui/reports/SessionReports.h"
 
 #include <filesystem>
+#include <optional>
 #include <string>
 
 namespace colonosim::reports {
@@ -40,5 +41,7 @@ enum class ReportFormat { Pdf, Csv, Xapi };
 /// `path`, so a reader never sees half a file. Throws std::runtime_error
 /// naming the file and the reason.
 void writeFileWhole(const std::filesystem::path& path, const std::string& bytes);
+/// The whole content of `path` (bytes as stored), or nothing when it cannot be read.
+[[nodiscard]] std::optional<std::string> readFileWhole(const std::filesystem::path& path);
 
 }  // namespace colonosim::reports

@@ -1,6 +1,7 @@
 #include "trainer_ui/review/CurriculumPage.h"
 
 #include "curricula/Curriculum.h"
+#include "trainer_ui/reports/TraineeReport.h"
 
 #include <QFileDialog>
 #include <QHBoxLayout>
@@ -10,9 +11,6 @@
 #include <QPushButton>
 #include <QRegularExpression>
 #include <QVBoxLayout>
-
-#include <fstream>
-#include <sstream>
 
 namespace colonosim::app {
 
@@ -81,16 +79,14 @@ void CurriculumPage::import()
         m_status->setText(QStringLiteral("Name the curriculum file to import first."));
         return;
     }
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
+    const std::optional<std::string> xml = reports::readFileWhole(path);
+    if (!xml) {
         m_status->setText(QStringLiteral("%1 cannot be read: check the name and that the file exists.")
                               .arg(QString::fromStdString(path)));
         return;
     }
-    std::stringstream xml;
-    xml << in.rdbuf();
     const curricula::CurriculumRead read =
-        curricula::parseCurriculum(xml.str(), std::filesystem::path(path).filename().string());
+        curricula::parseCurriculum(*xml, std::filesystem::path(path).filename().string());
     if (!read.ok()) {
         for (const std::string& e : read.errors) {
             m_errors->addItem(sentence(e));
@@ -101,7 +97,7 @@ void CurriculumPage::import()
         return;
     }
     try {
-        m_context.records.storeCurriculum(m_context.actor, read.value->name, xml.str());
+        m_context.records.storeCurriculum(m_context.actor, read.value->name, *xml);
         int available = 0;
         for (const curricula::Task& t : read.value->tasks) {
             available += t.available ? 1 : 0;

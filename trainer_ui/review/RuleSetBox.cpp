@@ -1,6 +1,7 @@
 #include "trainer_ui/review/RuleSetBox.h"
 
 #include "db/CertificationRules.h"
+#include "trainer_ui/reports/TraineeReport.h"
 #include "trainer_ui/review/CurriculumPage.h"
 
 #include <QComboBox>
@@ -13,8 +14,6 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 namespace colonosim::app {
 
@@ -115,19 +114,17 @@ void RuleSetBox::import()
         say(QStringLiteral("Name the rule set file to import first."), true);
         return;
     }
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
+    const std::optional<std::string> xml = reports::readFileWhole(path);
+    if (!xml) {
         say(QStringLiteral("%1 cannot be read: check the name and that the file exists.")
                 .arg(QString::fromStdString(path)),
             true);
         return;
     }
-    std::stringstream xml;
-    xml << in.rdbuf();
     try {
         const db::RuleSetVersion stored =
             db::CertificationRules(m_context.database)
-                .import(m_context.actor, xml.str(), std::filesystem::path(path).filename().string());
+                .import(m_context.actor, *xml, std::filesystem::path(path).filename().string());
         reload();
         say(QStringLiteral("Imported %1. It is stored, not yet active: choose it above and press Activate.")
                 .arg(describe(stored)),
