@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <thread>
 
@@ -39,8 +40,9 @@ TEST(HdcEndToEnd, TheSimulatedDeviceDrivesAnExpertRunThroughTheHdc)
         expertSamples = expert.recording().samples.size();
     }
     const double dt = settings.stepping.loopStep;
-    // The HDC paces the hand by the simulator's progress (the simulator is
-    // slower than real time here), so the hand follows the recorded expert.
+    // The HDC paces the hand by the simulator's progress, so the hand follows
+    // the recorded expert whether the simulator keeps real time or falls
+    // behind it (a loaded machine).
     std::atomic<double> simulatorTime{0.0};
     auto trajectory = [&](double) {
         const auto i = static_cast<size_t>(std::clamp(simulatorTime.load() / dt, 0.0, double(kSteps - 1)));
@@ -63,7 +65,11 @@ TEST(HdcEndToEnd, TheSimulatedDeviceDrivesAnExpertRunThroughTheHdc)
     std::unique_ptr<SimulatedDevice> secondDevice;
     std::unique_ptr<HdcController> second;
     std::jthread secondThread;
+    // Like the trainer's loop, the simulator never runs ahead of the wall
+    // clock: a device frame arrives each millisecond, one per loop step.
+    const auto start = std::chrono::steady_clock::now();
     for (int step = 0; step < kSteps; ++step) {
+        std::this_thread::sleep_until(start + std::chrono::duration<double>(step * dt));
         if (step == kSteps / 2) {
             firstThread.request_stop();  // the first HDC goes away mid-procedure
             firstThread.join();
