@@ -1,6 +1,7 @@
 #include "simcore/render/WallSurface.h"
 
 #include "simcore/render/CentrelineChart.h"
+#include "simcore/render/LaplaceChart.h"
 
 #include <algorithm>
 #include <cmath>
@@ -70,7 +71,7 @@ WallSurface buildWallSurface(const geometry::TriangleMesh& visualRest, const geo
     std::vector<double> lesionTopHeight(findings.lesions.size(), -1.0);
 
     const std::vector<int> nearest = nearestCentrelineSamples(visualRest, centreline);
-    surface.chart = centrelineChart(visualRest, centreline, nearest);
+    surface.chart = laplaceChart(visualRest, centreline);
     for (int i = 0; i < n; ++i) {
         const Eigen::Vector3d v = visualRest.vertices.col(i);
         const auto iu = static_cast<size_t>(i);
