@@ -30,6 +30,19 @@ int nearestSample(const geometry::Centreline& centreline, const Eigen::Vector3d&
     return best;
 }
 
+/// The chart's place of `p` measured from centreline sample `k`: the arc
+/// length continued along the sample's tangent (so that it is continuous
+/// between samples) and the clock angle in its frame.
+WallPlace placeFromSample(const geometry::Centreline& centreline, int k, const Eigen::Vector3d& p)
+{
+    const auto ks = static_cast<size_t>(k);
+    const Eigen::Vector3d offset = p - centreline.points[ks];
+    const Eigen::Vector3d& normal = centreline.normals[ks];
+    const Eigen::Vector3d binormal = centreline.tangents[ks].cross(normal);
+    return {centreline.arcLength[ks] + offset.dot(centreline.tangents[ks]),
+            std::atan2(offset.dot(binormal), offset.dot(normal))};
+}
+
 /// Inward relief (m, positive towards the centreline) and colour weight of a
 /// lesion at wall distance d.
 std::pair<double, double> lesionRelief(const Lesion& lesion, double d)
@@ -57,6 +70,11 @@ Eigen::Vector3d wallPoint(const geometry::Centreline& centreline, const WallPlac
     const Eigen::Vector3d b = centreline.tangents[k].cross(n);
     return centreline.points[k] +
            centreline.radius[k] * (std::cos(place.angle) * n + std::sin(place.angle) * b);
+}
+
+WallPlace wallPlaceAt(const geometry::Centreline& centreline, const Eigen::Vector3d& p)
+{
+    return placeFromSample(centreline, nearestSample(centreline, p), p);
 }
 
 WallSurface buildWallSurface(const geometry::TriangleMesh& visualRest, const geometry::Centreline& centreline,
@@ -106,22 +124,17 @@ WallSurface buildWallSurface(const geometry::TriangleMesh& visualRest, const geo
         }
         previous = k;
         const auto ks = static_cast<size_t>(k);
-        const Eigen::Vector3d offset = v - centreline.points[ks];
-        const Eigen::Vector3d& normal = centreline.normals[ks];
-        const Eigen::Vector3d binormal = centreline.tangents[ks].cross(normal);
-        const double theta = std::atan2(offset.dot(binormal), offset.dot(normal));
+        const WallPlace at = placeFromSample(centreline, k, v);
         const auto iu = static_cast<size_t>(i);
-        // Arc length continued along the tangent from the nearest sample,
-        // so that it is continuous between samples.
-        const double along = centreline.arcLength[ks] + offset.dot(centreline.tangents[ks]);
-        surface.chart[3 * iu] = static_cast<float>(along);
-        surface.chart[3 * iu + 1] = static_cast<float>(centreline.radius[ks] * std::cos(theta));
-        surface.chart[3 * iu + 2] = static_cast<float>(centreline.radius[ks] * std::sin(theta));
+        surface.chart[3 * iu] = static_cast<float>(at.arcLength);
+        surface.chart[3 * iu + 1] = static_cast<float>(centreline.radius[ks] * std::cos(at.angle));
+        surface.chart[3 * iu + 2] = static_cast<float>(centreline.radius[ks] * std::sin(at.angle));
         surface.vertexSegment[iu] = centreline.segment[ks];
         surface.finding[4 * iu + 2] =
             static_cast<float>(findings.stoolFraction[static_cast<size_t>(centreline.segment[ks])]);
 
         // Radial direction, outwards; relief moves the vertex against it.
+        const Eigen::Vector3d offset = v - centreline.points[ks];
         const Eigen::Vector3d radial =
             (offset - offset.dot(centreline.tangents[ks]) * centreline.tangents[ks]).normalized();
         double relief = 0.0;

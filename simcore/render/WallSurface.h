@@ -43,6 +43,8 @@ enum class LesionTissue : std::uint8_t { Adenoma, Serrated, Cancer };
 struct WallPlace {
     double arcLength = 0.0;
     double angle = 0.0;
+
+    bool operator==(const WallPlace&) const = default;
 };
 
 struct Lesion {
@@ -56,6 +58,20 @@ struct Diverticulum {
     WallPlace place;
     double diameter = 0.006;  ///< m
 };
+
+/// A contact bleeding mark (a submucosal haemorrhage from the scope's
+/// pressure): a dark-red spot of `radius` around `place`, drawn over the
+/// mucosa with `opacity`, with a noise-edged rim from the chart's relief.
+struct BleedingMark {
+    WallPlace place;
+    double radius = 0.002;  ///< m, on the wall
+    double opacity = 0.6;   ///< 0..1
+
+    bool operator==(const BleedingMark&) const = default;
+};
+
+/// The most bleeding marks a view draws (the rest are ignored).
+inline constexpr int kMaxBleedingMarks = 64;
 
 struct WallFindings {
     std::vector<Lesion> lesions;
@@ -73,6 +89,11 @@ struct WallSurface {
 
 /// The point of the distended wall (centreline radius) at a place, m.
 [[nodiscard]] Eigen::Vector3d wallPoint(const geometry::Centreline& centreline, const WallPlace& place);
+
+/// The place of the rest point `p` in the chart's parameterisation (nearest
+/// centreline sample, arc length continued along its tangent, clock angle in
+/// its frame), as buildWallSurface charts the visual vertices.
+[[nodiscard]] WallPlace wallPlaceAt(const geometry::Centreline& centreline, const Eigen::Vector3d& p);
 
 /// Builds the chart, findings and relief for `visualRest`. Throws
 /// std::invalid_argument when the centreline has fewer than two samples.
