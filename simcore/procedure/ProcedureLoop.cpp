@@ -8,6 +8,7 @@
 namespace colonosim::procedure {
 
 namespace {
+static_assert(BleedingMarks::kMaxMarks <= render::kMaxBleedingMarks, "the view draws every mark");
 constexpr int kLoopDetectionInterval = 10;  ///< loop steps between loop analyses (100 Hz at 1 kHz)
 
 RecorderParameters withColonLength(RecorderParameters p, double length)
@@ -29,7 +30,7 @@ ProcedureLoop::ProcedureLoop(const geometry::ColonAnatomy& anatomy, const Proced
       m_scope(settings.scope), m_contact(anatomy.physicsMesh, settings.contact),
       m_coupling(settings.contact.contactStiffness, settings.contactStepLimit), m_loops(anatomy.centreline),
       m_discomfort(withFailureStrain(settings.discomfort, settings.tissue.mesenteryMaxStrain)),
-      m_lesions(anatomy, settings.lesions, settings.viewing),
+      m_lesions(anatomy, settings.lesions, settings.viewing), m_bleeding(settings.bleeding),
       m_recorder(withColonLength(settings.recorder, anatomy.centreline.length()))
 {
     // The wall's side of contact is a force term over the tissue substeps; it
@@ -48,6 +49,7 @@ ProcedureLoop::ProcedureLoop(const geometry::ColonAnatomy& anatomy, const Proced
     const geometry::Centreline& c = anatomy.centreline;
     m_scope.setHandlePose(c.points.front(), c.tangents.front(), c.normals.front());
     m_trace.loopStep = settings.stepping.loopStep;
+    m_viewMarks.reserve(BleedingMarks::kMaxMarks);
 }
 
 void ProcedureLoop::applyContact()
@@ -125,7 +127,47 @@ const ProcedureOutputs& ProcedureLoop::step(const InputSample& input)
     ++m_steps;
     observe();
     m_recorder.record(m_frame);
+    updateBleeding();
     return m_outputs;
+}
+
+void ProcedureLoop::updateBleeding()
+{
+    // The wall's load at each contact: the normal loads of the segment's two
+    // scope nodes, interpolated at the contact (ContactCoupling's lambda,
+    // what the scope actually pushes with after the coupling).
+    const contact::ContactResult& contacts = m_contact.result();
+    const std::vector<Eigen::Vector3d>& nodeLoads = m_coupling.normalLoads();
+    const geometry::TriangleMesh& rest = m_anatomy.physicsMesh;
+    m_wallLoads.clear();
+    for (const contact::ScopeContact& c : contacts.contacts) {
+        const auto a = static_cast<size_t>(c.segment);
+        if (c.segment < 0 || a + 1 >= nodeLoads.size()) {
+            continue;
+        }
+        const double force =
+            (1.0 - c.segmentParam) * nodeLoads[a].norm() + c.segmentParam * nodeLoads[a + 1].norm();
+        const auto& t = rest.triangles[static_cast<size_t>(c.triangle)];
+        const Eigen::Vector3d point = c.barycentric.x() * rest.vertices.col(t[0]) +
+                                      c.barycentric.y() * rest.vertices.col(t[1]) +
+                                      c.barycentric.z() * rest.vertices.col(t[2]);
+        m_wallLoads.push_back(WallLoad{point, force});
+    }
+    const int appeared = m_bleeding.update(m_wallLoads, m_settings.stepping.loopStep, m_time);
+    if (m_bleeding.revision() == m_bleedingRevision) {
+        return;
+    }
+    m_bleedingRevision = m_bleeding.revision();
+    const std::vector<ContactMark>& marks = m_bleeding.marks();
+    m_viewMarks.resize(marks.size());
+    for (size_t k = 0; k < marks.size(); ++k) {
+        m_viewMarks[k].restPoint = marks[k].restPoint;
+        m_viewMarks[k].radius = marks[k].radius;
+        m_viewMarks[k].opacity = marks[k].opacity;
+    }
+    for (int k = 0; k < appeared; ++k) {
+        m_recorder.note(m_time, EventKind::ContactBleeding, {});
+    }
 }
 
 void ProcedureLoop::observe()

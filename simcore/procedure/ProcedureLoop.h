@@ -18,7 +18,9 @@
 ///      loop step with the substeps its stability bound asks for;
 ///   5. outputs: the handle force and torque (the base load of the chain),
 ///      the tip pose, the loop state, discomfort and perforation, handed to
-///      the recorder; the raw input is appended to the trace.
+///      the recorder; the raw input is appended to the trace. The contact
+///      loads of the step feed the bleeding marks (BleedingMarks.h); a new
+///      mark is a contact_bleeding event at the step's time.
 /// Air and suction change the insufflation pressure at declared rates.
 /// Everything is deterministic: the same case, build and input trace give a
 /// bit-identical recording.
@@ -29,12 +31,14 @@
 #include "simcore/physics/ActiveRegion.h"
 #include "simcore/physics/ColonBody.h"
 #include "simcore/physics/TissueSimulation.h"
+#include "simcore/procedure/BleedingMarks.h"
 #include "simcore/procedure/ContactCoupling.h"
 #include "simcore/procedure/Discomfort.h"
 #include "simcore/procedure/InputTrace.h"
 #include "simcore/procedure/LesionView.h"
 #include "simcore/procedure/LoopDetector.h"
 #include "simcore/procedure/Recorder.h"
+#include "simcore/render/WallSurface.h"
 #include "simcore/scope/Colonoscope.h"
 
 #include <memory>
@@ -51,6 +55,7 @@ struct ProcedureSettings {
     contact::ContactParameters contact;
     RecorderParameters recorder;
     DiscomfortParameters discomfort;
+    BleedingParameters bleeding;
     /// The case's lesions (LesionView.h), and the view they are seen by.
     std::vector<LesionSite> lesions;
     render::RenderParameters viewing;
@@ -93,10 +98,15 @@ public:
     [[nodiscard]] const physics::ColonBody& colon() const { return m_colon; }
     [[nodiscard]] const LoopDetector& loops() const { return m_loops; }
     [[nodiscard]] const physics::TissueSimulation& tissue() const { return *m_simulation; }
+    /// The contact bleeding marks so far, placed on the wall's chart for the
+    /// endoscope view; bleeding() has the model's marks (rest points, forces).
+    [[nodiscard]] const std::vector<render::BleedingMark>& bleedingMarks() const { return m_viewMarks; }
+    [[nodiscard]] const BleedingMarks& bleeding() const { return m_bleeding; }
 
 private:
     void applyContact();
     void observe();
+    void updateBleeding();
 
     const geometry::ColonAnatomy& m_anatomy;
     ProcedureSettings m_settings;
@@ -110,6 +120,10 @@ private:
     LoopDetector m_loops;
     DiscomfortModel m_discomfort;
     LesionView m_lesions;
+    BleedingMarks m_bleeding;
+    std::vector<WallLoad> m_wallLoads;              ///< this step's contact loads on the wall
+    std::vector<render::BleedingMark> m_viewMarks;  ///< m_bleeding's marks for the view
+    long m_bleedingRevision = 0;
     Recorder m_recorder;
     InputTrace m_trace;
     InputSample m_input;

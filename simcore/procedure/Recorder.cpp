@@ -29,6 +29,7 @@ std::string_view eventName(EventKind kind)
     case EventKind::LesionOutOfView: return "lesion_out_of_view";
     case EventKind::CleaningStart: return "cleaning_start";
     case EventKind::CleaningEnd: return "cleaning_end";
+    case EventKind::ContactBleeding: return "contact_bleeding";
     }
     return "unknown";
 }

@@ -81,6 +81,7 @@ enum class EventKind {
     LesionOutOfView,     ///< detail: "lesion K"
     CleaningStart,       ///< water (lens wash / jet) or suction held
     CleaningEnd,         ///< neither held any more
+    ContactBleeding,     ///< a contact bleeding mark appeared (BleedingMarks.h)
 };
 [[nodiscard]] std::string_view eventName(EventKind kind);
 /// "lesion K" for the lesion of index `index` (K = index + 1), as events name it.

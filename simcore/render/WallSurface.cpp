@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <string>
 
 namespace colonosim::render {
 
@@ -45,6 +46,24 @@ Eigen::Vector3d wallPoint(const geometry::Centreline& centreline, const WallPlac
     const Eigen::Vector3d b = centreline.tangents[k].cross(n);
     return centreline.points[k] +
            centreline.radius[k] * (std::cos(place.angle) * n + std::sin(place.angle) * b);
+}
+
+WallPlace chartPlaceAt(const Eigen::Matrix3Xd& restVertices, const std::vector<float>& chart,
+                       const Eigen::Vector3d& p)
+{
+    if (restVertices.cols() == 0 || chart.size() != 3 * static_cast<size_t>(restVertices.cols())) {
+        throw std::invalid_argument("chartPlaceAt: " + std::to_string(chart.size()) + " chart values for " +
+                                    std::to_string(restVertices.cols()) + " vertices; 3 per vertex required");
+    }
+    Eigen::Index nearest = 0;
+    (restVertices.colwise() - p).colwise().squaredNorm().minCoeff(&nearest);
+    const auto k = static_cast<size_t>(nearest);
+    return {chart[3 * k], std::atan2(chart[3 * k + 2], chart[3 * k + 1])};
+}
+
+WallPlace chartPlaceAt(const WallSurface& surface, const Eigen::Vector3d& p)
+{
+    return chartPlaceAt(surface.rest.vertices, surface.chart, p);
 }
 
 WallSurface buildWallSurface(const geometry::TriangleMesh& visualRest, const geometry::Centreline& centreline,

@@ -52,6 +52,7 @@ void EndoscopeViewWidget::paintGL()
     }
     m_scene->mapping.apply(m_snapshot->wall, m_visual);
     m_view->setWallPositions(m_visual);
+    m_view->setBleedingMarks(m_snapshot->bleedingMarks);
     m_view->render({m_snapshot->tip.position, m_snapshot->tip.rotation}, {m_snapshot->lensSoiling, 0.0},
                    width, height, defaultFramebufferObject());
     m_lastFrameAt = std::chrono::steady_clock::now();

@@ -56,6 +56,7 @@ void SimulationRunner::publish(Snapshot::State state, double physicsRate)
         out.frame.time = loop.time();
         out.tip = loop.outputs().tip;
         out.wall = loop.colon().body.positions();
+        out.bleedingMarks = loop.bleedingMarks();
         out.scopeNodes.assign(loop.scope().nodePositions().begin(), loop.scope().nodePositions().end());
         out.loopSegment.reset();
         if (loop.loops().current() != procedure::LoopKind::None) {

@@ -39,8 +39,9 @@ struct Snapshot {
     State state = State::Preparing;
     procedure::ProcedureFrame frame;
     scope::TipPose tip;
-    Eigen::Matrix3Xd wall;                    ///< physics node positions, m
-    std::vector<Eigen::Vector3d> scopeNodes;  ///< the shaft, m
+    Eigen::Matrix3Xd wall;                            ///< physics node positions, m
+    std::vector<render::BleedingMark> bleedingMarks;  ///< at their rest points
+    std::vector<Eigen::Vector3d> scopeNodes;          ///< the shaft, m
     std::optional<geometry::Segment> loopSegment;
     double lensSoiling = 0.0;  ///< 0..1
     double physicsRate = 0.0;  ///< loop steps per wall-clock second

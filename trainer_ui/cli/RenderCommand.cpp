@@ -191,6 +191,7 @@ int runRender(std::span<char* const> args)
     const auto drawView = [&](double lensSoiling) {
         scene.mapping.apply(loop.colon().body.positions(), scene.visual);
         view.setWallPositions(scene.visual);
+        view.setBleedingMarks(loop.bleedingMarks());
         view.render(poseOf(loop.outputs().tip), {lensSoiling, 0.0}, size.width, size.height);
         return toQImage(context.readBack());
     };
