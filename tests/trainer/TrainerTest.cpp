@@ -220,7 +220,20 @@ TEST(Trainer, AStudentTakesTheFirstTaskSeesTheResultsAndReplaysIt)
     ASSERT_NE(procedure, nullptr);
     const qint64 session = procedure->session();
     auto* view = child<app::EndoscopeViewWidget>(window, "endoscopeView");
-    ASSERT_SOON(view->framesDrawn() > 0);
+    {
+        // The first frame; on a timeout, say what the screen shows instead.
+        QElapsedTimer waited;
+        waited.start();
+        while (view->framesDrawn() == 0 && waited.elapsed() < kLongWait) {
+            QTest::qWait(10);
+        }
+        if (view->framesDrawn() == 0) {
+            screenshot(window, "procedure-without-a-frame");
+        }
+        ASSERT_GT(view->framesDrawn(), 0)
+            << "status: " << child<QLabel>(window, "procedureStatus")->text().toStdString()
+            << "; view: " << view->failure().toStdString();
+    }
     EXPECT_TRUE(view->failure().isEmpty()) << view->failure().toStdString();
     // The figures (printed, never asserted): frames drawn and loop steps per wall-clock second
     // from the first frame until 3.5 s simulated.
