@@ -1,9 +1,11 @@
 // Times one full procedure loop step (issue target >= 10,000 steps/s, at
 // least 5,000): the default colon (1,905 nodes) with its active region, the
 // 80-node scope, contact on the whole wall and the coupling, one thread.
-// The scene is first driven by the scripted expert for 3.5 s, so the scope
-// sits in the rectum against the wall; each iteration is one more expert
-// step from there (the scene evolves, as in a session).
+// The scene is first driven by the scripted expert for the argument's
+// milliseconds: 1000 leaves the scope in the rectum with most of the colon
+// asleep (the next 2 s stay so); 3500 puts it against the rectal wall just
+// before it enters the sigmoid, where the whole colon wakes within 2 s.
+// Each iteration is one more expert step (the scene evolves, as in a session).
 
 #include "simcore/geometry/ProceduralColon.h"
 #include "simcore/procedure/Operator.h"
@@ -21,15 +23,16 @@ void BM_ProcedureStep(benchmark::State& state)
         geometry::buildProceduralColon(geometry::AnatomyParameters{});
     procedure::ProcedureLoop loop(anatomy, procedure::ProcedureSettings{});
     procedure::ScriptedOperator expert(procedure::expertStyle());
-    for (int s = 0; s < 3500; ++s) {
+    for (int s = 0; s < state.range(0); ++s) {
         loop.step(expert.next(loop));
     }
     for (auto _ : state) {
         benchmark::DoNotOptimize(loop.step(expert.next(loop)));
     }
     state.counters["substeps"] = loop.tissue().substeps();
+    state.counters["integrated_nodes"] = static_cast<double>(loop.colon().body.integratedNodes().size());
     state.SetItemsProcessed(state.iterations());
 }
-BENCHMARK(BM_ProcedureStep)->Unit(benchmark::kMicrosecond)->Iterations(2000);
+BENCHMARK(BM_ProcedureStep)->Arg(1000)->Arg(3500)->Unit(benchmark::kMicrosecond)->Iterations(2000);
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include <benchmark/benchmark.h>
 
 #include <cstring>
+#include <vector>
 
 namespace {
 
@@ -66,6 +67,30 @@ void endoscopeFrame(benchmark::State& state)
     state.SetLabel(reinterpret_cast<const char*>(context.gl().GetString(GL_RENDERER)));
 }
 BENCHMARK(endoscopeFrame)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+/// endoscopeFrame's frame with the most bleeding marks a view draws, all
+/// ahead of the lens (9-15 cm along the colon, around the wall): the
+/// per-fragment cost of the marks where they cover the image.
+void endoscopeFrameWithBleeding(benchmark::State& state)
+{
+    render::OffscreenContext context(kWidth, kHeight);
+    const render::WallSurface surface =
+        render::buildWallSurface(anatomy().visualMesh, anatomy().centreline, render::WallFindings{});
+    render::EndoscopeView view(context.gl(), surface, render::RenderParameters{});
+    std::vector<render::BleedingMark> marks;
+    for (int k = 0; k < render::kMaxBleedingMarks; ++k) {
+        const render::WallPlace place{0.09 + 0.06 * k / render::kMaxBleedingMarks, 0.7 * k};
+        marks.push_back({render::wallPoint(anatomy().centreline, place), 0.003, 0.8});
+    }
+    view.setBleedingMarks(marks);
+    const render::CameraPose pose = poseAlongColon(0.08);
+    for (auto _ : state) {
+        view.render(pose, {}, kWidth, kHeight);
+        context.gl().Finish();
+    }
+    state.counters["marks"] = static_cast<double>(marks.size());
+}
+BENCHMARK(endoscopeFrameWithBleeding)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 /// The CPU side of a frame: mapping, normals, upload.
 void wallUpdate(benchmark::State& state)

@@ -160,6 +160,13 @@ CurriculumRead parseCurriculum(const std::string& xml, const std::string& label)
                 task.available = a != "false";
             }
             task.unavailableReason = r.text(t, "unavailable_reason", false);
+            if (const char* shape = t->Attribute("shape_view")) {
+                const std::string a = shape;
+                if (a != "true" && a != "false") {
+                    r.error(t, "shape_view = \"" + a + "\" is not one of true, false");
+                }
+                task.shapeView = a != "false";
+            }
             if (!task.available && task.unavailableReason.empty()) {
                 r.error(t, "task \"" + task.id + "\" is unavailable: it must say why (unavailable_reason)");
             }

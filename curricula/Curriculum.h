@@ -5,9 +5,9 @@
 /// task carries its instructions and learning objectives, the case
 /// constraints it hands to the case generator (its grammar, checked here),
 /// the benchmark set it is scored against, its prerequisites, the time
-/// limit, and whether it can be run yet (tasks that need instruments say why
-/// not). The reader refuses bad files with `file:line: message`, naming the
-/// field, the value and what is allowed.
+/// limit, whether it can be run yet (tasks that need instruments say why
+/// not), and whether the scope-shape view may be shown (shape_view). The reader refuses bad files with
+/// `file:line: message`, naming the field, the value and what is allowed.
 
 #include "case_generator/Constraints.h"
 
@@ -27,6 +27,7 @@ struct Task {
     double maxTime = 900.0;  ///< s
     bool available = true;
     std::string unavailableReason;
+    bool shapeView = true;  ///< the scope-shape view (magnetic imager) is shown during the task
 };
 
 struct Module {

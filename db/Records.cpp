@@ -1,6 +1,7 @@
 #include "db/Records.h"
 
 #include "db/Password.h"
+#include "db/Statement.h"
 
 #include <QCryptographicHash>
 #include <QSqlError>
@@ -21,52 +22,10 @@ std::string s(const QVariant& v)
     return v.toString().toStdString();
 }
 
-/// Prepares, binds in order and runs; throws DatabaseError with the statement.
 QSqlQuery run(QSqlDatabase db, const QString& sql, const QVariantList& binds = {})
 {
-    QSqlQuery query(db);
-    query.setForwardOnly(true);
-    if (!query.prepare(sql)) {
-        throw DatabaseError(sql.toStdString() + ": " + query.lastError().text().toStdString());
-    }
-    for (const QVariant& b : binds) {
-        query.addBindValue(b);
-    }
-    if (!query.exec()) {
-        throw DatabaseError(query.lastError().text().toStdString() +
-                            " (in: " + sql.simplified().toStdString() + ")");
-    }
-    return query;
+    return runStatement(std::move(db), sql, binds);
 }
-
-/// BEGIN IMMEDIATE (takes the write lock at once, so WAL readers never
-/// deadlock an upgrade), names the actor for the audit triggers; rolls back
-/// unless committed.
-class WriteTransaction {
-public:
-    WriteTransaction(QSqlDatabase db, std::optional<qint64> actor) : m_db(db)
-    {
-        run(m_db, QStringLiteral("BEGIN IMMEDIATE"));
-        m_open = true;
-        run(m_db, QStringLiteral("UPDATE actor_context SET user_id = ? WHERE id = 1"),
-            {actor ? QVariant(*actor) : QVariant()});
-    }
-    ~WriteTransaction()
-    {
-        if (m_open) {
-            QSqlQuery(m_db).exec(QStringLiteral("ROLLBACK"));
-        }
-    }
-    void commit()
-    {
-        run(m_db, QStringLiteral("COMMIT"));
-        m_open = false;
-    }
-
-private:
-    QSqlDatabase m_db;
-    bool m_open = false;
-};
 
 void checkName(const std::string& field, const std::string& value)
 {
@@ -121,7 +80,7 @@ qint64 Records::cohortId(const std::string& name)
     return query.value(0).toLongLong();
 }
 
-void Records::requireAdministrator(const Actor& actor, const std::string& operation)
+void requireAdministrator(const Actor& actor, const std::string& operation)
 {
     if (actor.role != Role::Administrator) {
         throw AccessDenied(actor.name + " (" + roleName(actor.role) + ") may not " + operation +
@@ -470,18 +429,47 @@ std::vector<SessionRow> Records::sessions(const Actor& actor, const std::string&
     return out;
 }
 
-QByteArray Records::sessionRecording(const Actor& actor, qint64 session)
+QByteArray Records::sessionBlob(const Actor& actor, qint64 session, SessionBlob which)
 {
+    const QString column =
+        which == SessionBlob::Recording ? QStringLiteral("recording") : QStringLiteral("trace");
     QSqlQuery query =
         run(m_database.connection(),
-            QStringLiteral("SELECT s.user_id, u.name, s.recording FROM sessions s JOIN users u ON u.id = "
-                           "s.user_id WHERE s.id = ?"),
+            QStringLiteral("SELECT s.user_id, u.name, s.") + column +
+                QStringLiteral(" FROM sessions s JOIN users u ON u.id = s.user_id WHERE s.id = ?"),
             {session});
     if (!query.next()) {
         throw DatabaseError("session " + std::to_string(session) + " does not exist");
     }
     requireReadable(actor, query.value(0).toLongLong(), s(query.value(1)));
     return query.value(2).toByteArray();
+}
+
+QByteArray Records::sessionRecording(const Actor& actor, qint64 session)
+{
+    return sessionBlob(actor, session, SessionBlob::Recording);
+}
+
+QByteArray Records::sessionTrace(const Actor& actor, qint64 session)
+{
+    return sessionBlob(actor, session, SessionBlob::Trace);
+}
+
+std::optional<std::string> Records::sessionCase(const Actor& actor, qint64 session)
+{
+    QSqlQuery query =
+        run(m_database.connection(),
+            QStringLiteral("SELECT s.user_id, u.name, c.xml FROM sessions s JOIN users u ON u.id = "
+                           "s.user_id LEFT JOIN cases c ON c.id = s.case_id WHERE s.id = ?"),
+            {session});
+    if (!query.next()) {
+        throw DatabaseError("session " + std::to_string(session) + " does not exist");
+    }
+    requireReadable(actor, query.value(0).toLongLong(), s(query.value(1)));
+    if (query.value(2).isNull()) {
+        return std::nullopt;
+    }
+    return s(query.value(2));
 }
 
 std::vector<CurvePoint> Records::learningCurve(const Actor& actor, const std::string& user,

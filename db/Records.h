@@ -45,6 +45,9 @@ public:
     explicit AccessDenied(const std::string& message) : std::runtime_error(message) {}
 };
 
+/// AccessDenied naming the actor, their role and `operation` unless `actor` is an administrator.
+void requireAdministrator(const Actor& actor, const std::string& operation);
+
 class AuthenticationFailed : public std::runtime_error {
 public:
     explicit AuthenticationFailed(const std::string& message) : std::runtime_error(message) {}
@@ -131,6 +134,11 @@ public:
     /// Completed sessions of `user`, oldest first, with metrics and scores.
     [[nodiscard]] std::vector<SessionRow> sessions(const Actor& actor, const std::string& user);
     [[nodiscard]] QByteArray sessionRecording(const Actor& actor, qint64 session);
+    /// The stored input trace of a session (encodeStoredTrace), for replay;
+    /// readable by whoever may read its recording.
+    [[nodiscard]] QByteArray sessionTrace(const Actor& actor, qint64 session);
+    /// The case XML a session ran on (none: the default colon); same rule as sessionTrace.
+    [[nodiscard]] std::optional<std::string> sessionCase(const Actor& actor, qint64 session);
     /// One metric of one trainee across their completed sessions (the dashboard query).
     [[nodiscard]] std::vector<CurvePoint> learningCurve(const Actor& actor, const std::string& user,
                                                         const std::string& metric);
@@ -150,9 +158,11 @@ public:
     void backup(const Actor& actor, const std::filesystem::path& destination);
 
 private:
+    enum class SessionBlob { Recording, Trace };
+    /// One stored column of a session, read under requireReadable.
+    [[nodiscard]] QByteArray sessionBlob(const Actor& actor, qint64 session, SessionBlob which);
     [[nodiscard]] qint64 userId(const std::string& name);
     [[nodiscard]] qint64 cohortId(const std::string& name);
-    void requireAdministrator(const Actor& actor, const std::string& operation);
     void requireReadable(const Actor& actor, qint64 user, const std::string& userName);
 
     Database& m_database;

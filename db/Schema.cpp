@@ -1,5 +1,7 @@
 #include "db/Schema.h"
 
+#include "curricula/Certification.h"
+
 #include <QSqlError>
 #include <QSqlQuery>
 #include <QStringList>
@@ -182,8 +184,81 @@ const std::vector<std::vector<const char*>>& migrations()
             R"(CREATE INDEX scores_by_session ON scores (session_id))",
             R"(CREATE INDEX audit_by_table ON audit (table_name, row_id))",
         },
+        // 4: a case assigned to a trainee or to a whole cohort
+        {
+            R"(CREATE TABLE case_assignments (
+                 id INTEGER PRIMARY KEY,
+                 case_id INTEGER NOT NULL REFERENCES cases(id) ON DELETE CASCADE,
+                 user_id INTEGER REFERENCES users(id) ON DELETE CASCADE,
+                 cohort_id INTEGER REFERENCES cohorts(id) ON DELETE CASCADE,
+                 assigned_by INTEGER NOT NULL REFERENCES users(id),
+                 assigned_at TEXT NOT NULL DEFAULT (strftime('%Y-%m-%dT%H:%M:%fZ', 'now')),
+                 CHECK ((user_id IS NULL) <> (cohort_id IS NULL)))
+            )",
+            R"(CREATE UNIQUE INDEX case_assignments_to_user ON case_assignments (case_id, user_id)
+                 WHERE user_id IS NOT NULL)",
+            R"(CREATE UNIQUE INDEX case_assignments_to_cohort ON case_assignments (case_id, cohort_id)
+                 WHERE cohort_id IS NOT NULL)",
+            R"(CREATE TRIGGER case_assignments_audit_insert AFTER INSERT ON case_assignments BEGIN
+                 INSERT INTO audit (actor_id, table_name, row_id, action, detail)
+                 VALUES ((SELECT user_id FROM actor_context WHERE id = 1), 'case_assignments', NEW.id,
+                         'insert', 'case ' || NEW.case_id ||
+                         CASE WHEN NEW.user_id IS NULL THEN ' to cohort ' || NEW.cohort_id
+                              ELSE ' to user ' || NEW.user_id END); END)",
+        },
+        // 5: certification rule sets of record, versioned, one active
+        {
+            R"(CREATE TABLE certification_rule_sets (
+                 id INTEGER PRIMARY KEY,
+                 name TEXT NOT NULL CHECK (length(name) BETWEEN 1 AND 200),
+                 version INTEGER NOT NULL UNIQUE CHECK (version >= 1),
+                 xml TEXT NOT NULL,
+                 imported_by INTEGER REFERENCES users(id),
+                 imported_at TEXT NOT NULL DEFAULT (strftime('%Y-%m-%dT%H:%M:%fZ', 'now')),
+                 active INTEGER NOT NULL DEFAULT 0 CHECK (active IN (0, 1)))
+            )",
+            R"(CREATE UNIQUE INDEX certification_rule_sets_one_active ON certification_rule_sets (active)
+                 WHERE active = 1)",
+            R"(CREATE TRIGGER certification_rule_sets_of_record BEFORE UPDATE OF name, version, xml, imported_by,
+                 imported_at ON certification_rule_sets BEGIN
+                 SELECT RAISE(ABORT, 'a stored certification rule set is of record: import a new version'); END)",
+            R"(CREATE TRIGGER certification_rule_sets_kept BEFORE DELETE ON certification_rule_sets BEGIN
+                 SELECT RAISE(ABORT, 'a stored certification rule set is of record: it is never deleted'); END)",
+            R"(CREATE TRIGGER certification_rule_sets_audit_insert AFTER INSERT ON certification_rule_sets BEGIN
+                 INSERT INTO audit (actor_id, table_name, row_id, action, detail)
+                 VALUES ((SELECT user_id FROM actor_context WHERE id = 1), 'certification_rule_sets', NEW.id,
+                         'insert', 'imported ' || NEW.name || ' version ' || NEW.version ||
+                         CASE WHEN NEW.active = 1 THEN ' (active)' ELSE '' END); END)",
+            R"(CREATE TRIGGER certification_rule_sets_audit_activate AFTER UPDATE OF active
+                 ON certification_rule_sets WHEN NEW.active = 1 AND OLD.active = 0 BEGIN
+                 INSERT INTO audit (actor_id, table_name, row_id, action, detail)
+                 VALUES ((SELECT user_id FROM actor_context WHERE id = 1), 'certification_rule_sets', NEW.id,
+                         'update', 'activated ' || NEW.name || ' version ' || NEW.version); END)",
+        },
     };
     return all;
+}
+
+/// Rows a migration stores besides its statements (bound values, not SQL text).
+void seed(QSqlQuery& query, int migration)
+{
+    if (migration != 5) {
+        return;
+    }
+    // The shipped core rule set becomes version 1 of record, and active.
+    const curricula::RuleSetRead core =
+        curricula::parseRuleSet(curricula::coreRuleSetXml(), "certification-rules.xml");
+    if (!core.ok()) {
+        throw DatabaseError("the shipped certification rule set does not parse: " + core.errors.front());
+    }
+    query.prepare(QStringLiteral("INSERT INTO certification_rule_sets (name, version, xml, imported_by, "
+                                 "active) VALUES (?, 1, ?, NULL, 1)"));
+    query.addBindValue(QString::fromStdString(core.value->name));
+    query.addBindValue(QString::fromStdString(curricula::coreRuleSetXml()));
+    if (!query.exec()) {
+        throw DatabaseError("cannot store the shipped certification rule set: " +
+                            query.lastError().text().toStdString());
+    }
 }
 
 }  // namespace
@@ -231,6 +306,12 @@ void migrate(QSqlDatabase& db, int target)
                 throw DatabaseError("migration " + std::to_string(version + 1) + " failed: " + error +
                                     "\n  in: " + statement);
             }
+        }
+        try {
+            seed(query, version + 1);
+        } catch (const DatabaseError&) {
+            db.rollback();
+            throw;
         }
         if (!query.exec(QStringLiteral("PRAGMA user_version = %1").arg(version + 1)) || !db.commit()) {
             const std::string error = db.lastError().text().toStdString();

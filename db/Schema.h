@@ -12,6 +12,13 @@
 ///      triggers on users, scores, progress and certificates
 ///   2  versioned benchmark sets; a score names the benchmark version it used
 ///   3  indexes for the per-trainee dashboard queries
+///   4  case assignments: a stored case assigned to a trainee or a cohort
+///      (audited)
+///   5  certification rule sets: name, version, the XML of record, who
+///      imported it and when, which one is active (at most one); rows are
+///      never changed but for `active`, never deleted; imports and
+///      activations audited. The shipped core rule set is stored as
+///      version 1, active, imported by no one
 
 #include <QSqlDatabase>
 

@@ -19,8 +19,11 @@ constexpr std::array kDefinitions = {
     MetricDefinition{"total_time", "s", Better::Neither, "length of the session", kMentor},
     MetricDefinition{"withdrawal_time", "s", Better::Higher, "from the cecum to the end of the session",
                      kQuality},
-    MetricDefinition{"effective_withdrawal_time", "s", Better::Higher,
-                     "withdrawal time less red-out (wall contact) time", "withdrawal quality studies"},
+    MetricDefinition{
+        "effective_withdrawal_time", "s", Better::Higher,
+        "withdrawal time less red-out (wall contact) and cleaning (water or suction held) time, overlaps "
+        "counted once",
+        "withdrawal quality studies"},
     MetricDefinition{
         "mucosa_visualised", "1", Better::Higher,
         "share of the colon length passed by the tip with a clear view (geometric estimate until the "
@@ -54,12 +57,12 @@ constexpr std::array kDefinitions = {
                      "share of the time at moderate or worse discomfort", "JAG comfort indicator"},
     MetricDefinition{"perforation", "1", Better::Lower, "1 when the wall was perforated", "UK screening"},
     MetricDefinition{"lesions_present", "1", Better::Neither, "lesions in the case", kMentor},
-    MetricDefinition{
-        "lesions_detected", "1", Better::Higher,
-        "lesion marks, at most one per lesion present (whether the lesion was in view is not yet "
-        "known to the recording)",
-        kMentor},
+    MetricDefinition{"lesions_detected", "1", Better::Higher,
+                     "lesions marked while in view (each counted once)", kMentor},
     MetricDefinition{"lesions_missed", "1", Better::Lower, "lesions present less lesions detected", kMentor},
+    MetricDefinition{"time_to_detection", "s", Better::Lower,
+                     "mean time from a detected lesion's first coming into view to its mark", kMentor},
+    MetricDefinition{"false_lesion_marks", "1", Better::Lower, "marks made with no lesion in view", kMentor},
     MetricDefinition{"tip_path_length", "m", Better::Lower, "distance travelled by the tip", kMentor},
     MetricDefinition{"insertion_efficiency", "1", Better::Higher,
                      "deepest insertion over the total forward shaft travel (1: never backed off)",

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <vector>
 
 namespace colonosim::scoring {
@@ -30,6 +31,38 @@ procedure::LoopKind loopFromDetail(const std::string& detail)
     }
     return procedure::LoopKind::None;
 }
+
+/// Intervals from start / end events: an end without a start is ignored.
+struct Intervals {
+    std::vector<std::pair<double, double>> closed;
+    double open = -1.0;  ///< start of the interval in progress; < 0: none
+    void start(double time) { open = time; }
+    void end(double time)
+    {
+        if (open >= 0.0) {
+            closed.emplace_back(open, time);
+            open = -1.0;
+        }
+    }
+};
+
+/// Length of the union of the intervals of `a` and `b` after `from`
+/// (overlapping red-out and cleaning count once).
+double unionAfter(std::vector<std::pair<double, double>> a, const std::vector<std::pair<double, double>>& b,
+                  double from)
+{
+    a.insert(a.end(), b.begin(), b.end());
+    std::sort(a.begin(), a.end());
+    double total = 0.0, reached = from;
+    for (const auto& [start, stop] : a) {
+        const double lo = std::max(start, reached);
+        if (stop > lo) {
+            total += stop - lo;
+            reached = stop;
+        }
+    }
+    return total;
+}
 }  // namespace
 
 MetricValues computeMetrics(const procedure::Recording& recording, const ScoringContext& context)
@@ -43,9 +76,9 @@ MetricValues computeMetrics(const procedure::Recording& recording, const Scoring
 
     // Events: cecum, red-out intervals, loops, perforation, lesion marks.
     double cecum = -1.0;
-    std::vector<std::pair<double, double>> redOuts;
-    double redOutStart = -1.0;
-    int loops = 0, reduced = 0, marks = 0;
+    Intervals redOuts, cleanings;
+    int loops = 0, reduced = 0, falseMarks = 0;
+    std::map<std::string, double> firstInView, firstMark;  // by lesion name
     bool perforation = false;
     for (const char* name :
          {"loops_n", "loops_alpha", "loops_reverse_alpha", "loops_gamma", "loops_reverse_splenic"}) {
@@ -58,13 +91,10 @@ MetricValues computeMetrics(const procedure::Recording& recording, const Scoring
                 cecum = e.time;
             }
             break;
-        case procedure::EventKind::RedOutStart: redOutStart = e.time; break;
-        case procedure::EventKind::RedOutEnd:
-            if (redOutStart >= 0.0) {
-                redOuts.emplace_back(redOutStart, e.time);
-                redOutStart = -1.0;
-            }
-            break;
+        case procedure::EventKind::RedOutStart: redOuts.start(e.time); break;
+        case procedure::EventKind::RedOutEnd: redOuts.end(e.time); break;
+        case procedure::EventKind::CleaningStart: cleanings.start(e.time); break;
+        case procedure::EventKind::CleaningEnd: cleanings.end(e.time); break;
         case procedure::EventKind::LoopFormed: {
             ++loops;
             const std::string metric = loopMetric(loopFromDetail(e.detail));
@@ -75,22 +105,25 @@ MetricValues computeMetrics(const procedure::Recording& recording, const Scoring
         }
         case procedure::EventKind::LoopResolved: ++reduced; break;
         case procedure::EventKind::Perforation: perforation = true; break;
-        case procedure::EventKind::LesionMarked: ++marks; break;
+        case procedure::EventKind::LesionInView: firstInView.emplace(e.detail, e.time); break;
+        case procedure::EventKind::LesionMarked:
+            if (firstInView.count(e.detail) != 0) {
+                firstMark.emplace(e.detail, e.time);
+            } else {
+                ++falseMarks;
+            }
+            break;
         default: break;
         }
     }
-    if (redOutStart >= 0.0) {
-        redOuts.emplace_back(redOutStart, end);
-    }
-    double redOutTime = 0.0, redOutAfterCecum = 0.0;
-    for (const auto& [a, b] : redOuts) {
+    redOuts.end(end);  // an interval still open when the session ends closes there
+    cleanings.end(end);
+    double redOutTime = 0.0;
+    for (const auto& [a, b] : redOuts.closed) {
         redOutTime += b - a;
-        if (cecum >= 0.0) {
-            redOutAfterCecum += std::max(0.0, b - std::max(a, cecum));
-        }
     }
     auto inRedOut = [&](double t) {
-        return std::any_of(redOuts.begin(), redOuts.end(),
+        return std::any_of(redOuts.closed.begin(), redOuts.closed.end(),
                            [t](const auto& r) { return t >= r.first && t < r.second; });
     };
 
@@ -99,15 +132,24 @@ MetricValues computeMetrics(const procedure::Recording& recording, const Scoring
         m["time_to_cecum"] = cecum;
     }
     m["withdrawal_time"] = cecum >= 0.0 ? end - cecum : 0.0;
-    m["effective_withdrawal_time"] = cecum >= 0.0 ? std::max(0.0, end - cecum - redOutAfterCecum) : 0.0;
+    m["effective_withdrawal_time"] =
+        cecum >= 0.0 ? std::max(0.0, end - cecum - unionAfter(redOuts.closed, cleanings.closed, cecum)) : 0.0;
     m["clear_view"] = end > 0.0 ? 1.0 - redOutTime / end : 0.0;
-    m["red_out_count"] = static_cast<double>(redOuts.size());
+    m["red_out_count"] = static_cast<double>(redOuts.closed.size());
     m["loop_count"] = loops;
     m["loops_reduced"] = std::min(reduced, loops);
     m["perforation"] = perforation ? 1.0 : 0.0;
     m["lesions_present"] = context.lesionsPresent;
-    m["lesions_detected"] = std::min(marks, context.lesionsPresent);
+    m["lesions_detected"] = static_cast<double>(std::min<size_t>(firstMark.size(), context.lesionsPresent));
     m["lesions_missed"] = context.lesionsPresent - m["lesions_detected"];
+    m["false_lesion_marks"] = falseMarks;
+    if (!firstMark.empty()) {
+        double sum = 0.0;
+        for (const auto& [lesion, marked] : firstMark) {
+            sum += marked - firstInView.at(lesion);
+        }
+        m["time_to_detection"] = sum / static_cast<double>(firstMark.size());
+    }
 
     // Samples.
     const auto bins = static_cast<size_t>(std::ceil(context.colonLength / context.mucosaBin));

@@ -3,7 +3,11 @@
 /// Metrics of one session, computed from its procedure Recording (samples at
 /// 100 Hz and edge events). Definitions: MetricDefinitions.cpp.
 ///   time to cecum      first CecumReached event (absent when never reached)
-///   withdrawal time    end of session - time to cecum; effective: less red-out time
+///   withdrawal time    end of session - time to cecum; effective: less the
+///                      union of red-out (RedOutStart/End) and cleaning
+///                      (CleaningStart/End: water or suction held) after the
+///                      cecum, each overlap counted once; an interval still
+///                      open at the end is closed at the end
 ///   clear view         1 - (red-out time / total time), red-out from RedOutStart/End
 ///   mucosa visualised  GEOMETRIC ESTIMATE (the renderer does not yet report
 ///                      coverage): the colon is cut into bins along its length;
@@ -14,8 +18,11 @@
 ///   forces             |handle force|, |handle torque| over the samples; time with
 ///                      |handle force| above the excessive threshold
 ///   discomfort         peak, and share of samples >= the moderate threshold
-///   lesions            marks (LesionMarked) capped at the lesions present; time to
-///                      detection needs lesion positions in the recording (not yet)
+///   lesions            detected: distinct lesions named by a LesionMarked event
+///                      (the recorder names the lesion in view when marked);
+///                      missed: present - detected; time to detection: mean of
+///                      (mark - first LesionInView of that lesion) over the
+///                      detected; false marks: marks with no lesion in view
 ///   path length        sum of |tip(k+1) - tip(k)|
 ///   insertion efficiency  max insertion / sum of positive insertion steps
 

@@ -1,11 +1,13 @@
 /// \file
-/// `colonosim`: with no arguments, the trainer (until the trainer issue lands,
-/// the headless demonstration); with a subcommand, a headless tool.
+/// `colonosim`: with no arguments, the trainer window when a display exists
+/// (else the headless demonstration); `colonosim gui [--db FILE]` or
+/// `colonosim --db FILE` for the window; with a subcommand, a headless tool.
 /// Exit status: 0 success, 1 failure of the run itself, 2 bad input.
 
 #include "simcore/devices/Gamepad.h"
 #include "simcore/geometry/MeshImport.h"
 #include "simcore/params/Parameter.h"
+#include "trainer_ui/app/TrainerApp.h"
 #include "trainer_ui/cli/CommandLine.h"
 #include "trainer_ui/cli/Commands.h"
 
@@ -19,9 +21,12 @@ void printUsage()
 {
     std::cout
         << "usage: colonosim [SUBCOMMAND] [OPTIONS]\n"
-           "With no subcommand: the headless demonstration (the trainer arrives later).\n"
+           "With no subcommand: the trainer window when a display exists (DISPLAY, WAYLAND_DISPLAY or\n"
+           "QT_QPA_PLATFORM set), else the headless demonstration.\n"
            "Subcommands (each has --help):\n"
-           "  demo        headless demonstration of the colon simulation\n"
+           "  gui         the trainer window: gui [--db FILE] (also: colonosim --db FILE)\n"
+           "  demo        headless demonstration: generate a case, run the expert, score it into the\n"
+           "              records, write the PDF report (demo --tissue: the tissue physics alone)\n"
            "  params      declared physical parameters with units, ranges and sources\n"
            "  mesh        import and check a patient-specific colon surface\n"
            "  bench       speed-versus-error report: bench [--quick] --out DIR\n"
@@ -32,6 +37,7 @@ void printUsage()
            "  case        patient cases: case generate|validate|stats (randomized from population "
            "statistics)\n"
            "  user        the records' users: user add|list|passwd (authenticate with --as NAME)\n"
+           "  rules       the certification rule sets: rules list|import FILE|activate VERSION --as ADMIN\n"
            "  progress    a trainee's tasks, learning curve and certification rules: progress --user NAME\n"
            "  report      report --user NAME --format pdf|csv|xapi --out FILE; report verify FILE\n"
            "  backup      online backup of the records: backup --out FILE\n"
@@ -46,9 +52,16 @@ int main(int argc, char** argv)
 {
     using namespace colonosim;
     const std::span<char* const> all(argv, static_cast<size_t>(argc));
-    const std::string command = argc > 1 ? argv[1] : "demo";
-    const std::span<char* const> rest = argc > 1 ? all.subspan(2) : all.subspan(1);
+    const std::string first = argc > 1 ? argv[1] : "";
+    // No subcommand: the window where one can be shown; options alone (--db FILE) mean the window too.
+    const bool window = first == "gui" || first.starts_with("--db") || (argc == 1 && app::displayAvailable());
+    const std::string command = window ? "gui" : (argc > 1 ? first : "demo");
+    const bool named = argc > 1 && !first.starts_with("--db");  // a subcommand word comes first
+    const std::span<char* const> rest = named ? all.subspan(2) : all.subspan(1);
     try {
+        if (command == "gui") {
+            return app::runTrainer(rest);
+        }
         if (command == "--help" || command == "-h" || command == "help") {
             printUsage();
             return 0;
@@ -76,6 +89,9 @@ int main(int argc, char** argv)
         }
         if (command == "user") {
             return cli::runUser(rest);
+        }
+        if (command == "rules") {
+            return cli::runRules(rest);
         }
         if (command == "progress") {
             return cli::runProgress(rest);

@@ -4,9 +4,20 @@ namespace colonosim::devices {
 
 void HdcOperator::recordConnection(procedure::ProcedureLoop& loop)
 {
+    // The state first: the server counts a connection before it says it is
+    // connected, so the count read after covers the link seen connected.
     const bool connected = m_server.connected();
+    const int connection = m_server.connections();
+    if (m_connected && connection != m_connection) {
+        // The link we knew ended and another began since the last step.
+        m_connected = false;
+        if (m_announced) {
+            loop.noteDevice(m_device, false);
+        }
+    }
     if (connected && !m_connected) {
         m_connected = true;
+        m_connection = connection;
         m_announced = false;
         m_framesAtConnect = m_frames;
     }

@@ -5,7 +5,9 @@
 /// so the scope stays where the hand left it), and the HDC gets back the
 /// handle load of each step. Connections and disconnections are recorded
 /// in the session, with the device's name (a connection is recorded when
-/// its first frame, which carries the name, arrives).
+/// its first frame, which carries the name, arrives). A link replaced by a
+/// new one between two loop steps is still recorded as a disconnection and
+/// a connection: the server counts its connections.
 
 #include "simcore/devices/HdcServer.h"
 #include "simcore/procedure/Operator.h"
@@ -31,6 +33,7 @@ private:
     procedure::InputSample m_input;
     double m_inputTime = 0.0;
     bool m_connected = false;
+    int m_connection = 0;      ///< the server's connection count when this one began
     bool m_announced = false;  ///< the connection is in the record (once its first frame named the device)
     long m_framesAtConnect = 0;
     bool m_sentOnce = false;

@@ -57,8 +57,8 @@ void HdcServer::serve(std::stop_token stop)
             if (link.open()) {
                 reader = MessageReader(maxBody);
                 std::snprintf(frame.device, sizeof frame.device, "%s", "unknown");
+                ++m_connections;  // before the state: whoever sees it connected sees this count
                 m_connected = true;
-                ++m_connections;
             }
             continue;
         }

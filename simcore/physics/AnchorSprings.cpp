@@ -15,19 +15,22 @@ int AnchorSprings::add(int node, const Eigen::Vector3d& anchor, double stiffness
     m_anchor.push_back(anchor);
     m_k.push_back(stiffness);
     m_c.push_back(damping);
+    m_awake.append(numAnchors() - 1, node);
     return numAnchors() - 1;
 }
 
 void AnchorSprings::addForce(const Positions& x, Forces& f) const
 {
-    for (size_t a = 0; a < m_node.size(); ++a) {
+    for (const int entry : m_awake.entries()) {
+        const auto a = static_cast<size_t>(entry);
         f.col(m_node[a]) -= m_k[a] * (x.col(m_node[a]) - m_anchor[a]);
     }
 }
 
 void AnchorSprings::addDampingForce(const Positions& /*x*/, const Velocities& v, Forces& f) const
 {
-    for (size_t a = 0; a < m_node.size(); ++a) {
+    for (const int entry : m_awake.entries()) {
+        const auto a = static_cast<size_t>(entry);
         f.col(m_node[a]) -= m_c[a] * v.col(m_node[a]);
     }
 }

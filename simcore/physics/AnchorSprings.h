@@ -4,6 +4,7 @@
 /// retroperitoneal binding of fixed colon segments and adhesions.
 ///   f_i = -k_i (x_i - a_i) - c_i v_i,   K_ii = -k_i I,   D_ii = -c_i I.
 
+#include "simcore/physics/AwakeEntries.h"
 #include "simcore/physics/ForceTerm.h"
 
 #include <string>
@@ -27,6 +28,10 @@ public:
     void addDampingProduct(const Positions& x, const Eigen::Matrix3Xd& dv,
                            Eigen::Matrix3Xd& df) const override;
     void addStiffnessBound(const Positions& x, Eigen::VectorXd& kRow, Eigen::VectorXd& cRow) const override;
+    void onActiveSetChanged(const std::vector<std::uint8_t>& awake) override
+    {
+        m_awake.rebuild(m_node, awake);
+    }
     [[nodiscard]] double potentialEnergy(const Positions& x) const override;
 
 private:
@@ -35,6 +40,7 @@ private:
     std::vector<Eigen::Vector3d> m_anchor;
     std::vector<double> m_k;
     std::vector<double> m_c;
+    AwakeEntries m_awake;  ///< anchors whose node is awake (the force sums)
 };
 
 }  // namespace colonosim::physics

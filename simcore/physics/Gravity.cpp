@@ -42,7 +42,7 @@ PatientPosition parsePatientPosition(std::string_view text)
 
 void Gravity::addForce(const Positions& /*x*/, Forces& f) const
 {
-    for (Eigen::Index i = 0; i < m_mass.size(); ++i) {
+    for (const int i : m_awake.entries()) {
         f.col(i) += m_mass[i] * m_g;
     }
 }

@@ -5,6 +5,7 @@
 /// direction is +y supine, -y prone, +x left lateral decubitus (the usual
 /// position for colonoscopy) and -x right lateral.
 
+#include "simcore/physics/AwakeEntries.h"
 #include "simcore/physics/ForceTerm.h"
 
 #include <string_view>
@@ -25,7 +26,9 @@ public:
     /// `masses` (kg) is copied; g in m/s^2.
     Gravity(const Eigen::VectorXd& masses, const Eigen::Vector3d& acceleration)
         : m_mass(masses), m_g(acceleration)
-    {}
+    {
+        m_awake.rebuildPerNode(static_cast<int>(m_mass.size()), {});
+    }
 
     [[nodiscard]] std::string_view name() const override { return "gravity"; }
     void addForce(const Positions& x, Forces& f) const override;
@@ -34,11 +37,20 @@ public:
     void addDampingProduct(const Positions&, const Eigen::Matrix3Xd&, Eigen::Matrix3Xd&) const override {}
     void addStiffnessBound(const Positions&, Eigen::VectorXd&, Eigen::VectorXd&) const override {}
     [[nodiscard]] double potentialEnergy(const Positions& x) const override;
-    void onMassesChanged(const Eigen::VectorXd& masses) override { m_mass = masses; }
+    void onMassesChanged(const Eigen::VectorXd& masses) override
+    {
+        m_mass = masses;
+        m_awake.rebuildPerNode(static_cast<int>(m_mass.size()));
+    }
+    void onActiveSetChanged(const std::vector<std::uint8_t>& awake) override
+    {
+        m_awake.rebuildPerNode(static_cast<int>(m_mass.size()), awake);
+    }
 
 private:
     Eigen::VectorXd m_mass;
     Eigen::Vector3d m_g;
+    AwakeEntries m_awake;  ///< awake nodes (the force sums)
 };
 
 }  // namespace colonosim::physics

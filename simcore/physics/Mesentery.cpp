@@ -15,6 +15,7 @@ int Mesentery::add(int node, const Eigen::Vector3d& root, double restLength, con
     m_root.push_back(root);
     m_rest.push_back(restLength);
     m_law.push_back(law);
+    m_awake.append(numTethers() - 1, node);
     return numTethers() - 1;
 }
 
@@ -53,7 +54,8 @@ double Mesentery::maxStrain(const Positions& x) const
 
 void Mesentery::addForce(const Positions& x, Forces& f) const
 {
-    for (size_t t = 0; t < m_node.size(); ++t) {
+    for (const int entry : m_awake.entries()) {
+        const auto t = static_cast<size_t>(entry);
         const Eigen::Vector3d d = x.col(m_node[t]) - m_root[t];
         const double l = d.norm();
         const double T = tension(m_law[t], m_rest[t], l - m_rest[t]);
@@ -65,7 +67,8 @@ void Mesentery::addForce(const Positions& x, Forces& f) const
 
 void Mesentery::addDampingForce(const Positions& x, const Velocities& v, Forces& f) const
 {
-    for (size_t t = 0; t < m_node.size(); ++t) {
+    for (const int entry : m_awake.entries()) {
+        const auto t = static_cast<size_t>(entry);
         const Eigen::Vector3d d = x.col(m_node[t]) - m_root[t];
         const double l2 = d.squaredNorm();
         if (l2 > m_rest[t] * m_rest[t]) {

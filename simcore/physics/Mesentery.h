@@ -15,6 +15,7 @@
 /// Soft tissue's exponential-like stiffening: White et al. (mesocolon 0.088 -
 /// 6.858 MPa, failure stretch 1.77 - 3.18), reference/physical-parameters.md.
 
+#include "simcore/physics/AwakeEntries.h"
 #include "simcore/physics/ForceTerm.h"
 
 namespace colonosim::physics {
@@ -46,12 +47,17 @@ public:
                            Eigen::Matrix3Xd& df) const override;
     void addStiffnessBound(const Positions& x, Eigen::VectorXd& kRow, Eigen::VectorXd& cRow) const override;
     [[nodiscard]] double potentialEnergy(const Positions& x) const override;
+    void onActiveSetChanged(const std::vector<std::uint8_t>& awake) override
+    {
+        m_awake.rebuild(m_node, awake);
+    }
 
 private:
     std::vector<int> m_node;
     std::vector<Eigen::Vector3d> m_root;
     std::vector<double> m_rest;
     std::vector<Law> m_law;
+    AwakeEntries m_awake;  ///< tethers whose node is awake (the force sums)
 };
 
 }  // namespace colonosim::physics

@@ -2,19 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <stdexcept>
 
 namespace colonosim::physics {
-
-namespace {
-double compressionRatio()
-{
-    static const double c = std::getenv("COMPRESS") ? std::atof(std::getenv("COMPRESS")) : 1.0;
-    return c;
-}
-double effective(double k, double l, double rest) { return l < rest ? k * compressionRatio() : k; }
-}  // namespace
 
 int SpringSet::add(int i, int j, double restLength, double stiffness, double damping, SpringFamily family)
 {
@@ -88,7 +78,7 @@ void SpringSet::addForce(const Positions& x, Forces& f) const
         if (l < kMinLength) {
             continue;
         }
-        const Eigen::Vector3d fs = (effective(m_k[e], l, m_rest[e]) * (l - m_rest[e]) / l) * d;
+        const Eigen::Vector3d fs = (m_k[e] * (l - m_rest[e]) / l) * d;
         f.col(m_i[e]) += fs;
         f.col(m_j[e]) -= fs;
     }
@@ -124,8 +114,7 @@ void SpringSet::addForceAndDamping(const Positions& x, const Velocities& v, Forc
         }
         const double invL = 1.0 / std::sqrt(l2);
         const double relativeSpeed = d.dot(v.col(j) - v.col(i)) * invL;
-        const double l = l2 * invL;
-        const double tension = effective(m_k[e], l, m_rest[e]) * (l - m_rest[e]) + m_c[e] * relativeSpeed;
+        const double tension = m_k[e] * (l2 * invL - m_rest[e]) + m_c[e] * relativeSpeed;
         const Eigen::Vector3d fs = (tension * invL) * d;
         f.col(i) += fs;
         f.col(j) -= fs;
@@ -150,7 +139,7 @@ void SpringSet::stiffnessProduct(const Positions& x, const Eigen::Matrix3Xd& dx,
             transverse = std::max(transverse, 0.0);
         }
         // K_e r = k [(1 - L/l)(r - u u.r) + u u.r]
-        const Eigen::Vector3d kr = effective(m_k[e], l, m_rest[e]) * (transverse * (r - axial * u) + axial * u);
+        const Eigen::Vector3d kr = m_k[e] * (transverse * (r - axial * u) + axial * u);
         df.col(m_i[e]) += kr;
         df.col(m_j[e]) -= kr;
     }
@@ -208,7 +197,7 @@ double SpringSet::potentialEnergy(const Positions& x) const
     double energy = 0.0;
     for (size_t e = 0; e < m_i.size(); ++e) {
         const double stretch = (x.col(m_j[e]) - x.col(m_i[e])).norm() - m_rest[e];
-        energy += 0.5 * effective(m_k[e], m_rest[e] + stretch, m_rest[e]) * stretch * stretch;
+        energy += 0.5 * m_k[e] * stretch * stretch;
     }
     return energy;
 }

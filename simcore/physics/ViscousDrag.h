@@ -8,6 +8,7 @@
 /// colon do. It is a declared parameter (TissueParameters::surroundingDampingRate),
 /// never a hidden default.
 
+#include "simcore/physics/AwakeEntries.h"
 #include "simcore/physics/ForceTerm.h"
 
 namespace colonosim::physics {
@@ -15,13 +16,16 @@ namespace colonosim::physics {
 class ViscousDrag final : public ForceTerm {
 public:
     /// `masses` in kg (copied); alpha in 1/s.
-    ViscousDrag(const Eigen::VectorXd& masses, double rate) : m_mass(masses), m_rate(rate) {}
+    ViscousDrag(const Eigen::VectorXd& masses, double rate) : m_mass(masses), m_rate(rate)
+    {
+        m_awake.rebuildPerNode(static_cast<int>(m_mass.size()), {});
+    }
 
     [[nodiscard]] std::string_view name() const override { return "surrounding_drag"; }
     void addForce(const Positions&, Forces&) const override {}
     void addDampingForce(const Positions&, const Velocities& v, Forces& f) const override
     {
-        for (Eigen::Index i = 0; i < m_mass.size(); ++i) {
+        for (const int i : m_awake.entries()) {
             f.col(i) -= (m_rate * m_mass[i]) * v.col(i);
         }
     }
@@ -37,11 +41,20 @@ public:
         cRow += m_rate * m_mass;
     }
     [[nodiscard]] double potentialEnergy(const Positions&) const override { return 0.0; }
-    void onMassesChanged(const Eigen::VectorXd& masses) override { m_mass = masses; }
+    void onMassesChanged(const Eigen::VectorXd& masses) override
+    {
+        m_mass = masses;
+        m_awake.rebuildPerNode(static_cast<int>(m_mass.size()));
+    }
+    void onActiveSetChanged(const std::vector<std::uint8_t>& awake) override
+    {
+        m_awake.rebuildPerNode(static_cast<int>(m_mass.size()), awake);
+    }
 
 private:
     Eigen::VectorXd m_mass;
     double m_rate;
+    AwakeEntries m_awake;  ///< awake nodes (the drag sums)
 };
 
 }  // namespace colonosim::physics

@@ -1,6 +1,6 @@
+#include "simcore/procedure/ContactCoupling.h"
 #include <cstdio>
 #include <cstdlib>
-#include "simcore/procedure/ContactCoupling.h"
 
 #include <algorithm>
 #include <cmath>
@@ -153,12 +153,6 @@ void ContactCoupling::solve(const std::vector<contact::LumenNodeContact>& contac
                 moved += m_block[a * m + b] * change + m_wall[a * m + b] * change;
             }
             const contact::LumenNodeContact& c = contacts[static_cast<size_t>(m_active[a])];
-            if (std::getenv("CCDBG") && m_active[a] == std::atoi(std::getenv("CCDBG")) && sweep == 0) {
-                for (size_t b = 0; b < m; ++b) {
-                    const Eigen::Vector3d change = m_force[b] - m_startForce[b];
-                    std::fprintf(stderr, "   b=%d df=(%.3f %.3f %.3f) Cdf=%.2fmm Wdf=%.2fmm\n", m_active[b], change.x(), change.y(), change.z(), (m_block[a*m+b]*change).norm()*1e3, (m_wall[a*m+b]*change).norm()*1e3);
-                }
-            }
             Eigen::Vector3d n;
             const double depth = c.depthAt(rod.position[static_cast<size_t>(m_active[a])] + moved, n);
             const double g = n.dot(m_block[a * m + a] * n) + m_wall[a * m + a];
@@ -179,12 +173,6 @@ void ContactCoupling::solve(const std::vector<contact::LumenNodeContact>& contac
         if (largest < kSweepTolerance) {
             break;
         }
-    }
-    if (std::getenv("CCDBG") && m > 0) {
-        size_t a = m - 1;
-        for (size_t k = 0; k < m; ++k) if (m_active[k] == std::atoi(std::getenv("CCDBG"))) a = k;
-        const auto& c = contacts[static_cast<size_t>(m_active[a])];
-        std::fprintf(stderr, "m=%zu sweeps=%d node=%d depth0=%.2fmm lam0=%.3f lam=%.3f g=%.4g n0=(%.2f %.2f %.2f) n=(%.2f %.2f %.2f)\n", m, m_sweeps, m_active[a], c.depth*1e3, m_startLambda[a], m_lambda[a], m_compliance[a], c.normal.x(), c.normal.y(), c.normal.z(), m_normal[a].x(), m_normal[a].y(), m_normal[a].z());
     }
 }
 
@@ -236,27 +224,6 @@ void ContactCoupling::solveAndApply(scope::DiscreteRod& rod)
     }
 }
 
-void ContactCoupling::relax(scope::DiscreteRod& rod)
-{
-    constexpr double kRelaxation = 0.5;
-    ++m_sweeps;
-    for (size_t a = 0; a < m_active.size(); ++a) {
-        const auto node = static_cast<size_t>(m_active[a]);
-        if (node >= rod.position.size()) {
-            continue;
-        }
-        Eigen::Vector3d n;
-        const double depth = (*m_contacts)[node].depthAt(rod.position[node], n);
-        const double g = m_compliance[a];
-        double lambda = m_lambda[a] + kRelaxation * (m_stiffness * depth - m_lambda[a]) / (1.0 + m_stiffness * g);
-        lambda = std::clamp(lambda, 0.0, m_startLambda[a] + m_maxStep / std::max(g, 1e-12));
-        m_lambda[a] = lambda;
-        m_normal[a] = n;
-        m_force[a] = lambda * n;
-        rod.force[node] = m_baseForce[a] + m_force[a];
-    }
-}
-
 void ContactCoupling::finish(const std::vector<contact::LumenNodeContact>& contacts,
                              const contact::LumenContact& law)
 {
@@ -269,7 +236,8 @@ void ContactCoupling::finish(const std::vector<contact::LumenNodeContact>& conta
         m_load[i] = m_force[a];
         const double stick =
             2.0 * law.parameters().frictionCoefficient * m_lambda[a] * m_compliance[a] / m_loopStep;
-        m_loads.col(static_cast<Eigen::Index>(i)) = m_force[a] + law.friction(contacts[i], m_lambda[a], stick);
+        m_loads.col(static_cast<Eigen::Index>(i)) =
+            m_force[a] + law.friction(contacts[i], m_lambda[a], stick);
     }
 }
 
@@ -280,7 +248,8 @@ Eigen::MatrixXd ContactCoupling::delassus() const
     for (size_t a = 0; a < m; ++a) {
         for (size_t b = 0; b < m; ++b) {
             g(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b)) =
-                m_normal[a].dot(m_block[a * m + b] * m_normal[b]) + m_wall[a * m + b] * m_normal[a].dot(m_normal[b]);
+                m_normal[a].dot(m_block[a * m + b] * m_normal[b]) +
+                m_wall[a * m + b] * m_normal[a].dot(m_normal[b]);
         }
     }
     return g;

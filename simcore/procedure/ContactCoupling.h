@@ -59,12 +59,9 @@ public:
     void update(const std::vector<contact::LumenNodeContact>& contacts, const contact::LumenContact& law,
                 const scope::DiscreteRod& rod, int addedAtBase, const Eigen::VectorXd& wallCompliance);
 
-    /// Inside the chain iterations: re-measures each active node on its local
-    /// wall and relaxes its normal force towards k_c depth; sets the rod's
-    /// node forces to the base loads (gravity) plus contact.
-    void relax(scope::DiscreteRod& rod);
-    /// Alternative to relax: the whole linearised contact problem of the step
-    /// solved once (Gauss-Seidel on the rod's compliance), loads set on `rod`.
+    /// The whole linearised contact problem of the step solved once
+    /// (Gauss-Seidel on the rod's compliance); the rod's node forces become
+    /// the base loads (gravity) plus contact.
     void solveAndApply(scope::DiscreteRod& rod);
     /// After the chain iterations: the final loads and friction.
     void finish(const std::vector<contact::LumenNodeContact>& contacts, const contact::LumenContact& law);

@@ -113,7 +113,8 @@ Eigen::Matrix3Xd LoopDetector::colonPath(double from, double to) const
     return path;
 }
 
-LoopKind LoopDetector::update(const Eigen::Matrix3Xd& shaft, double insertion, std::span<const double> nodeArcs)
+LoopKind LoopDetector::update(const Eigen::Matrix3Xd& shaft, double insertion,
+                              std::span<const double> nodeArcs)
 {
     const Eigen::Index n = shaft.cols();
     if (n < 2 || m_colon.points.size() < 2) {

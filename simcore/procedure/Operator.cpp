@@ -11,12 +11,12 @@ namespace colonosim::procedure {
 
 OperatorStyle expertStyle()
 {
-    return {0.03, 0.01, 8.0, true, 2.0};
+    return {0.03, 0.01, 8.0, true, 2.0, 0.5, true};
 }
 
 OperatorStyle noviceStyle()
 {
-    return {0.06, 0.04, 25.0, false, 0.5};
+    return {0.06, 0.04, 25.0, false, 0.5, 3.0};
 }
 
 InputSample ScriptedOperator::next(const ProcedureLoop& loop)
@@ -39,34 +39,45 @@ InputSample ScriptedOperator::next(const ProcedureLoop& loop)
     if (inCamera.norm() > 1e-6 && m_phase != Phase::Withdraw) {
         // Turn the dials towards the lumen, following its angular offset with
         // a first-order lag (the operator's reaction), within +-1 rad.
-        if (std::getenv("OPDBG") != nullptr && static_cast<long>(loop.time() * 1000.0) % 2000 == 0) {
-            std::fprintf(stderr, "t=%.1f target in camera (%.1f %.1f %.1f) mm dials (%.2f %.2f)\n", loop.time(),
-                         inCamera.x() * 1e3, inCamera.y() * 1e3, inCamera.z() * 1e3, m_input.dialUpDown,
-                         m_input.dialLeftRight);
-        }
         double up = std::atan2(inCamera.y(), std::abs(inCamera.z()) + 1e-3);
         double left = std::atan2(inCamera.x(), std::abs(inCamera.z()) + 1e-3);
         const double follow = std::min(1.0, m_style.steeringGain * dt);
-        if (std::getenv("INTEGRAL") != nullptr) {
+        if (m_style.aimsBeforeInserting) {
             if (m_phase != Phase::Insert) {
                 up = 0.0;
                 left = 0.0;
             }
             // Turn the dials while the lumen is off centre and hold them where it is centred.
             m_input.dialUpDown = std::clamp(m_input.dialUpDown + follow * up, -2.5, 2.5);
-            static const double torque = std::getenv("TORQUE") ? std::atof(std::getenv("TORQUE")) : 0.0;
-            // Torque steering: roll the view (shaft rotation) so the lumen comes into the up/down plane.
-            m_input.rotation += torque * dt * std::clamp(left, -1.0, 1.0) * (up >= 0.0 ? 1.0 : -1.0);
-            m_input.dialLeftRight =
-                std::clamp(m_input.dialLeftRight + (torque > 0.0 ? 0.3 : 1.0) * follow * left, -2.5, 2.5);
+            m_input.dialLeftRight = std::clamp(m_input.dialLeftRight + follow * left, -2.5, 2.5);
             m_offCentre = std::hypot(up, left);
         } else {
-        m_input.dialUpDown += follow * (std::clamp(up, -1.0, 1.0) - m_input.dialUpDown);
-        m_input.dialLeftRight += follow * (std::clamp(left, -1.0, 1.0) - m_input.dialLeftRight);
+            m_input.dialUpDown += follow * (std::clamp(up, -1.0, 1.0) - m_input.dialUpDown);
+            m_input.dialLeftRight += follow * (std::clamp(left, -1.0, 1.0) - m_input.dialLeftRight);
         }
     } else {
         m_input.dialUpDown *= 1.0 - dt;  // relax the dials while withdrawing
         m_input.dialLeftRight *= 1.0 - dt;
+    }
+
+    // Lesions: mark each once, after it has stayed in view for markDelay
+    // (one press per step at most; the button is released the next step).
+    m_input.buttons &= static_cast<std::uint8_t>(~kMarkLesion);
+    for (int k = 0; k < 32; ++k) {
+        const auto bit = std::uint32_t{1} << k;
+        auto& since = m_inViewSince[static_cast<size_t>(k)];
+        if ((frame.lesionsInView & bit) == 0) {
+            since = -1.0;
+            continue;
+        }
+        if (since < 0.0) {
+            since = loop.time();
+        }
+        if ((m_marked & bit) == 0 && loop.time() - since >= m_style.markDelay &&
+            (m_input.buttons & kMarkLesion) == 0) {
+            m_input.buttons |= kMarkLesion;
+            m_marked |= bit;
+        }
     }
 
     switch (m_phase) {
@@ -77,27 +88,13 @@ InputSample ScriptedOperator::next(const ProcedureLoop& loop)
             m_reduceUntil = std::max(0.0, m_input.insertion - 0.03);
         } else if (frame.tipArcLength >= colon.length() - 0.03 || m_input.insertion >= maxInsertion) {
             m_phase = Phase::Withdraw;
-        } else if (std::getenv("INTEGRAL") == nullptr || m_offCentre < 0.35) {
+        } else if (!m_style.aimsBeforeInserting || m_offCentre < kAimedWithin) {
             m_input.insertion = std::min(m_input.insertion + m_style.insertSpeed * dt, maxInsertion);
-            m_aimingSince = -1.0;
-        } else if (std::getenv("SLIDE") != nullptr &&
-                   std::max(std::abs(m_input.dialUpDown), std::abs(m_input.dialLeftRight)) >= 2.4) {
-            // Slide by: the dials can turn no further, so feed slowly along the wall with them held.
-            m_input.insertion =
-                std::min(m_input.insertion + std::atof(std::getenv("SLIDE")) * m_style.insertSpeed * dt, maxInsertion);
-        } else {
-            // The lumen cannot be centred from here: back off and approach again.
-            m_aimingSince = m_aimingSince < 0.0 ? loop.time() : m_aimingSince;
-            if (std::getenv("BACKOFF") != nullptr && loop.time() - m_aimingSince > 1.5) {
-                m_phase = Phase::ReduceLoop;
-                m_reduceUntil = std::max(0.0, m_input.insertion - 0.03);
-                m_aimingSince = -1.0;
-            }
         }
         break;
     }
     case Phase::ReduceLoop:
-        if (std::getenv("INTEGRAL") != nullptr) {
+        if (m_style.aimsBeforeInserting) {
             m_input.dialUpDown *= 1.0 - 2.0 * dt;  // ease the dials back while backing off
             m_input.dialLeftRight *= 1.0 - 2.0 * dt;
         }

@@ -7,7 +7,8 @@
 ///   Expert: inserts at 3 cm/s steering the tip towards the lumen; when the
 ///     handle force exceeds 8 N or the shaft stores a loop, withdraws 3 cm
 ///     with clockwise torque (the standard loop reduction) before going on;
-///     from the cecum withdraws slowly (1 cm/s), sweeping the tip.
+///     from the cecum withdraws slowly (1 cm/s), sweeping the tip; marks a
+///     lesion that has stayed in view for 0.5 s.
 ///   Novice: pushes at 6 cm/s through resistance, backs off only above
 ///     25 N, steers late (low gain), and withdraws fast (4 cm/s).
 ///   Replay: plays an input trace back sample by sample.
@@ -15,6 +16,8 @@
 #include "simcore/procedure/InputTrace.h"
 #include "simcore/procedure/ProcedureLoop.h"
 
+#include <array>
+#include <cstdint>
 #include <memory>
 #include <string_view>
 
@@ -35,14 +38,24 @@ struct OperatorStyle {
     double forceLimit;     ///< N of handle force that makes it back off
     bool reducesLoops;     ///< withdraws with clockwise torque when a loop forms
     double steeringGain;   ///< 1/s: rate at which the dials follow the lumen's angular offset
+    double markDelay;      ///< s a lesion stays in view before it is marked (recognition time)
+    /// Steer, then push: the dials integrate the lumen's offset and hold where
+    /// it is centred, and the scope is fed only while the lumen lies within
+    /// kAimedWithin of the view's centre (the expert); otherwise the dials
+    /// follow the offset and the feed never waits (the novice).
+    bool aimsBeforeInserting = false;
 };
+
+/// Angular offset of the lumen from the view's centre within which an
+/// operator that aims before inserting feeds the scope, rad.
+inline constexpr double kAimedWithin = 0.35;
 
 [[nodiscard]] OperatorStyle expertStyle();
 [[nodiscard]] OperatorStyle noviceStyle();
 
 class ScriptedOperator final : public Operator {
 public:
-    explicit ScriptedOperator(const OperatorStyle& style) : m_style(style) {}
+    explicit ScriptedOperator(const OperatorStyle& style) : m_style(style) { m_inViewSince.fill(-1.0); }
     InputSample next(const ProcedureLoop& loop) override;
     [[nodiscard]] bool finished() const override { return m_finished; }
 
@@ -50,11 +63,12 @@ private:
     enum class Phase { Insert, ReduceLoop, Withdraw };
     OperatorStyle m_style;
     Phase m_phase = Phase::Insert;
-    double m_offCentre = 0.0;
-    double m_aimingSince = -1.0;  ///< when the lumen went off centre while inserting, s  ///< the lumen's angular offset in the view, rad
+    double m_offCentre = 0.0;  ///< the lumen's angular offset in the view, rad
     InputSample m_input;
     double m_reduceUntil = 0.0;  ///< insertion at which a loop reduction ends, m
     bool m_finished = false;
+    std::array<double, 32> m_inViewSince{};  ///< s, per lesion; negative while out of view
+    std::uint32_t m_marked = 0;              ///< lesions already marked
 };
 
 class ReplayOperator final : public Operator {

@@ -10,6 +10,7 @@
 namespace colonosim::procedure {
 
 namespace {
+static_assert(BleedingMarks::kMaxMarks <= render::kMaxBleedingMarks, "the view draws every mark");
 constexpr int kLoopDetectionInterval = 10;  ///< loop steps between loop analyses (100 Hz at 1 kHz)
 
 RecorderParameters withColonLength(RecorderParameters p, double length)
@@ -29,8 +30,10 @@ ProcedureLoop::ProcedureLoop(const geometry::ColonAnatomy& anatomy, const Proced
     : m_anatomy(anatomy), m_settings(settings),
       m_colon(physics::buildColonBody(anatomy, settings.tissue, settings.environment, settings.calibration)),
       m_scope(settings.scope), m_contact(anatomy, settings.contact),
-      m_coupling(settings.contact.contactStiffness, settings.contactStepLimit, settings.stepping.loopStep), m_loops(anatomy.centreline),
+      m_coupling(settings.contact.contactStiffness, settings.contactStepLimit, settings.stepping.loopStep),
+      m_loops(anatomy.centreline),
       m_discomfort(withFailureStrain(settings.discomfort, settings.tissue.mesenteryMaxStrain)),
+      m_lesions(anatomy, settings.lesions, settings.viewing), m_bleeding(settings.bleeding),
       m_recorder(withColonLength(settings.recorder, anatomy.centreline.length()))
 {
     // Over one loop step a wall node gives way by at most dt^2 / m per newton.
@@ -50,16 +53,12 @@ ProcedureLoop::ProcedureLoop(const geometry::ColonAnatomy& anatomy, const Proced
     const geometry::Centreline& c = anatomy.centreline;
     m_scope.setHandlePose(c.points.front(), c.tangents.front(), c.normals.front());
     m_trace.loopStep = settings.stepping.loopStep;
+    m_viewMarks.reserve(BleedingMarks::kMaxMarks);
 }
 
 void ProcedureLoop::applyContact()
 {
-    static const double ratio = std::getenv("RATIO") ? std::atof(std::getenv("RATIO")) : 0.0;
-    static const bool freeMotion = std::getenv("FREE") != nullptr;
-    m_scope.beginStep(m_settings.stepping.loopStep, ratio);
-    if (freeMotion) {
-        m_scope.step();  // the free motion under the last step's loads
-    }
+    m_scope.beginStep(m_settings.stepping.loopStep, m_settings.scope.jointDampingRatio);
     const auto nodes = m_scope.nodePositions();
     const auto n = static_cast<Eigen::Index>(nodes.size());
     m_scopePrevious = m_scopeNow;
@@ -80,34 +79,15 @@ void ProcedureLoop::applyContact()
             m_scopeVelocity.col(i) = (m_scopeNow.col(i) - previous.col(i)) / m_settings.stepping.loopStep;
         }
     }
-    const auto& contacts = m_contact.compute(m_scopeNow, m_scopeVelocity, 0.5 * m_settings.scope.outerDiameter,
-                                             m_colon.body.positions(), m_colon.body.velocities());
+    const auto& contacts =
+        m_contact.compute(m_scopeNow, m_scopeVelocity, 0.5 * m_settings.scope.outerDiameter,
+                          m_colon.body.positions(), m_colon.body.velocities());
     m_scope.clearLoads();
     m_scope.addGravity(m_settings.environment.gravity *
                        physics::downDirection(m_settings.environment.patientPosition));
     m_coupling.update(contacts, m_contact, m_scope.rod(), static_cast<int>(shift), m_wallCompliance);
-    if (std::getenv("RELAX") != nullptr) {
-        m_scope.step([this](scope::DiscreteRod& rod) { m_coupling.relax(rod); });
-    } else {
-        m_coupling.solveAndApply(m_scope.rod());
-        m_scope.step();
-        static const int outer = std::getenv("OUTER") ? std::atoi(std::getenv("OUTER")) : 1;
-        for (int it = 1; it < outer; ++it) {
-            Eigen::Matrix3Xd now(3, n);
-            const auto moved = m_scope.nodePositions();
-            for (Eigen::Index i = 0; i < n; ++i) {
-                now.col(i) = moved[static_cast<size_t>(i)];
-            }
-            const auto& again = m_contact.compute(now, m_scopeVelocity, 0.5 * m_settings.scope.outerDiameter,
-                                                  m_colon.body.positions(), m_colon.body.velocities());
-            m_scope.clearLoads();
-            m_scope.addGravity(m_settings.environment.gravity *
-                               physics::downDirection(m_settings.environment.patientPosition));
-            m_coupling.update(again, m_contact, m_scope.rod(), 0, m_wallCompliance);
-            m_coupling.solveAndApply(m_scope.rod());
-            m_scope.step();
-        }
-    }
+    m_coupling.solveAndApply(m_scope.rod());
+    m_scope.step();
     m_coupling.finish(contacts, m_contact);
     // Friction joins the scope's loads for the next step's solve.
     m_colon.body.clearExternalForces();
@@ -159,7 +139,45 @@ const ProcedureOutputs& ProcedureLoop::step(const InputSample& input)
     ++m_steps;
     observe();
     m_recorder.record(m_frame);
+    updateBleeding();
     return m_outputs;
+}
+
+void ProcedureLoop::updateBleeding()
+{
+    // The wall's load at each scope node in contact: the normal part of the
+    // coupling's load on the node, at the contact's wall point at rest.
+    const std::vector<contact::LumenNodeContact>& contacts = m_contact.contacts();
+    const Eigen::Matrix3Xd& loads = m_coupling.loads();
+    const Eigen::Matrix3Xd& rest = m_anatomy.physicsMesh.vertices;
+    m_wallLoads.clear();
+    for (Eigen::Index i = 0; i < loads.cols() && static_cast<size_t>(i) < contacts.size(); ++i) {
+        const contact::LumenNodeContact& c = contacts[static_cast<size_t>(i)];
+        const double force = loads.col(i).dot(c.normal);
+        if (!(force > 0.0)) {
+            continue;
+        }
+        Eigen::Vector3d point = Eigen::Vector3d::Zero();
+        for (size_t k = 0; k < 4; ++k) {
+            point += c.weights[k] * rest.col(c.wallNodes[k]);
+        }
+        m_wallLoads.push_back(WallLoad{point, force});
+    }
+    const int appeared = m_bleeding.update(m_wallLoads, m_settings.stepping.loopStep, m_time);
+    if (m_bleeding.revision() == m_bleedingRevision) {
+        return;
+    }
+    m_bleedingRevision = m_bleeding.revision();
+    const std::vector<ContactMark>& marks = m_bleeding.marks();
+    m_viewMarks.resize(marks.size());
+    for (size_t k = 0; k < marks.size(); ++k) {
+        m_viewMarks[k].restPoint = marks[k].restPoint;
+        m_viewMarks[k].radius = marks[k].radius;
+        m_viewMarks[k].opacity = marks[k].opacity;
+    }
+    for (int k = 0; k < appeared; ++k) {
+        m_recorder.note(m_time, EventKind::ContactBleeding, {});
+    }
 }
 
 void ProcedureLoop::observe()
@@ -208,6 +226,7 @@ void ProcedureLoop::observe()
     f.mesenteryStrain = pain.mesenteryStrain;
     f.discomfort = m_discomfort.update(pain, dt);
     f.perforation = m_discomfort.perforates(pain);
+    f.lesionsInView = m_lesions.inView(x, tip);
 }
 
 }  // namespace colonosim::procedure

@@ -19,7 +19,9 @@
 ///      loop step with the substeps its stability bound asks for;
 ///   5. outputs: the handle force and torque (the base load of the chain),
 ///      the tip pose, the loop state, discomfort and perforation, handed to
-///      the recorder; the raw input is appended to the trace.
+///      the recorder; the raw input is appended to the trace. The contact
+///      loads of the step feed the bleeding marks (BleedingMarks.h); a new
+///      mark is a contact_bleeding event at the step's time.
 /// Air and suction change the insufflation pressure at declared rates.
 /// Everything is deterministic: the same case, build and input trace give a
 /// bit-identical recording.
@@ -29,11 +31,14 @@
 #include "simcore/physics/ActiveRegion.h"
 #include "simcore/physics/ColonBody.h"
 #include "simcore/physics/TissueSimulation.h"
+#include "simcore/procedure/BleedingMarks.h"
 #include "simcore/procedure/ContactCoupling.h"
 #include "simcore/procedure/Discomfort.h"
 #include "simcore/procedure/InputTrace.h"
+#include "simcore/procedure/LesionView.h"
 #include "simcore/procedure/LoopDetector.h"
 #include "simcore/procedure/Recorder.h"
+#include "simcore/render/WallSurface.h"
 #include "simcore/scope/Colonoscope.h"
 
 #include <memory>
@@ -50,6 +55,10 @@ struct ProcedureSettings {
     contact::ContactParameters contact;
     RecorderParameters recorder;
     DiscomfortParameters discomfort;
+    BleedingParameters bleeding;
+    /// The case's lesions (LesionView.h), and the view they are seen by.
+    std::vector<LesionSite> lesions;
+    render::RenderParameters viewing;
     double insufflationRate = 266.6;  ///< Pa/s while air (or, negative, suction) is pressed (2 mmHg/s)
     double maxInsufflation = 8000.0;  ///< Pa the insufflator never exceeds (60 mmHg)
     /// m: the contact response moves a scope node at most this far per loop
@@ -92,10 +101,15 @@ public:
     /// The deformed lumen and each scope node's contact, as of the last step.
     [[nodiscard]] const contact::LumenContact& lumen() const { return m_contact; }
     [[nodiscard]] const ContactCoupling& coupling() const { return m_coupling; }
+    /// The contact bleeding marks so far, placed on the wall's chart for the
+    /// endoscope view; bleeding() has the model's marks (rest points, forces).
+    [[nodiscard]] const std::vector<render::BleedingMark>& bleedingMarks() const { return m_viewMarks; }
+    [[nodiscard]] const BleedingMarks& bleeding() const { return m_bleeding; }
 
 private:
     void applyContact();
     void observe();
+    void updateBleeding();
 
     const geometry::ColonAnatomy& m_anatomy;
     ProcedureSettings m_settings;
@@ -109,6 +123,11 @@ private:
     std::vector<double> m_nodeArcs;  ///< each scope node's place along the colon (lumen station), m
     LoopDetector m_loops;
     DiscomfortModel m_discomfort;
+    LesionView m_lesions;
+    BleedingMarks m_bleeding;
+    std::vector<WallLoad> m_wallLoads;              ///< this step's contact loads on the wall
+    std::vector<render::BleedingMark> m_viewMarks;  ///< m_bleeding's marks for the view
+    long m_bleedingRevision = 0;
     Recorder m_recorder;
     InputTrace m_trace;
     InputSample m_input;
@@ -116,7 +135,7 @@ private:
     ProcedureOutputs m_outputs;
     Eigen::Matrix3Xd m_scopeNow, m_scopePrevious, m_scopeVelocity;
     Eigen::Matrix3Xd m_scopeAligned;  ///< the previous shape aligned from the tip (continuous detection)
-    double m_maxWallForce = 0.0;  ///< largest contact load on one scope node this step, N
+    double m_maxWallForce = 0.0;      ///< largest contact load on one scope node this step, N
     double m_time = 0.0;
     long m_steps = 0;
 };

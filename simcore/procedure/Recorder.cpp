@@ -1,5 +1,6 @@
 #include "simcore/procedure/Recorder.h"
 
+#include <bit>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -24,8 +25,18 @@ std::string_view eventName(EventKind kind)
     case EventKind::InputRejected: return "input_rejected";
     case EventKind::DeviceConnected: return "device_connected";
     case EventKind::DeviceDisconnected: return "device_disconnected";
+    case EventKind::LesionInView: return "lesion_in_view";
+    case EventKind::LesionOutOfView: return "lesion_out_of_view";
+    case EventKind::CleaningStart: return "cleaning_start";
+    case EventKind::CleaningEnd: return "cleaning_end";
+    case EventKind::ContactBleeding: return "contact_bleeding";
     }
     return "unknown";
+}
+
+std::string lesionName(int index)
+{
+    return "lesion " + std::to_string(index + 1);
 }
 
 Recorder::Recorder(const RecorderParameters& parameters) : m_parameters(parameters)
@@ -76,8 +87,22 @@ void Recorder::record(const ProcedureFrame& f)
     if (pressed && (f.input.buttons & ~m_buttons & kWater) != 0) {
         event(f.time, EventKind::LensWash);
     }
+    constexpr std::uint8_t kCleaning = kWater | kSuction;
+    const bool cleaning = (f.input.buttons & kCleaning) != 0;
+    if (cleaning != ((m_buttons & kCleaning) != 0)) {
+        event(f.time, cleaning ? EventKind::CleaningStart : EventKind::CleaningEnd);
+    }
+    for (std::uint32_t changed = f.lesionsInView ^ m_lesionsInView; changed != 0; changed &= changed - 1) {
+        const int k = std::countr_zero(changed);  // lowest changed lesion first
+        const bool inView = (f.lesionsInView & (std::uint32_t{1} << k)) != 0;
+        event(f.time, inView ? EventKind::LesionInView : EventKind::LesionOutOfView, lesionName(k));
+    }
+    m_lesionsInView = f.lesionsInView;
     if (pressed && (f.input.buttons & ~m_buttons & kMarkLesion) != 0) {
-        event(f.time, EventKind::LesionMarked);
+        // The mark names the lesion in view (the first, when several are), or none.
+        const std::string detail = f.lesionsInView != 0 ? lesionName(std::countr_zero(f.lesionsInView))
+                                                        : std::string("none in view");
+        event(f.time, EventKind::LesionMarked, detail);
     }
     m_buttons = f.input.buttons;
     // Retroflexion: the tip looks back along the colon (more than 135 degrees).

@@ -8,7 +8,10 @@
 /// discomfort and loop state. Events, detected on edges of the per-step
 /// frame: cecum reached, loop formed / resolved (with its type), excessive
 /// handle force start / end, perforation, red-out start / end (lens against
-/// the wall), lens wash and lesion marked (button presses), retroflexion
+/// the wall), lens wash and lesion marked (button presses), cleaning start /
+/// end (water or suction held: the first step with either held, the first
+/// step with neither; a session ending while cleaning has no end event and
+/// is closed at its end by whoever reads it), retroflexion
 /// (tip pointing back along the colon), device input rejected, and input
 /// device connected / disconnected (with its name: which device drove the session).
 ///
@@ -22,6 +25,7 @@
 
 #include <Eigen/Core>
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -45,6 +49,7 @@ struct ProcedureFrame {
     double discomfort = 0.0;                                       ///< 0-10
     bool perforation = false;
     LoopKind loop = LoopKind::None;
+    std::uint32_t lesionsInView = 0;  ///< bit k: lesion k of the case is in view (LesionView.h)
     bool inputRejected = false;
     std::string inputRejection;
 };
@@ -72,8 +77,15 @@ enum class EventKind {
     InputRejected,
     DeviceConnected,     ///< detail: the input device's name
     DeviceDisconnected,  ///< detail: the input device's name
+    LesionInView,        ///< detail: "lesion K" (K from 1, the case's order)
+    LesionOutOfView,     ///< detail: "lesion K"
+    CleaningStart,       ///< water (lens wash / jet) or suction held
+    CleaningEnd,         ///< neither held any more
+    ContactBleeding,     ///< a contact bleeding mark appeared (BleedingMarks.h)
 };
 [[nodiscard]] std::string_view eventName(EventKind kind);
+/// "lesion K" for the lesion of index `index` (K = index + 1), as events name it.
+[[nodiscard]] std::string lesionName(int index);
 
 struct RecordedEvent {
     double time;
@@ -189,6 +201,7 @@ private:
     RecorderParameters m_parameters;
     Recording m_recording;
     double m_nextSample = 0.0;
+    std::uint32_t m_lesionsInView = 0;
     bool m_cecumReached = false;
     bool m_excessive = false;
     bool m_redOut = false;

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 namespace colonosim::render {
 
@@ -26,7 +27,8 @@ void setCamera(const GlFunctions& gl, const ShaderProgram& program, const Camera
 
 EndoscopeView::EndoscopeView(const GlFunctions& gl, const WallSurface& surface,
                              const RenderParameters& parameters)
-    : m_gl(gl), m_parameters(parameters), m_triangles(surface.rest.triangles)
+    : m_gl(gl), m_parameters(parameters), m_triangles(surface.rest.triangles), m_chart(surface.chart),
+      m_restVertices(surface.rest.vertices)
 {
     m_parameters.validate();
     m_wall = std::make_unique<ShaderProgram>(
@@ -69,6 +71,14 @@ EndoscopeView::EndoscopeView(const GlFunctions& gl, const WallSurface& surface,
                            reinterpret_cast<void*>(3 * sizeof(float)));
     gl.EnableVertexAttribArray(2);
     gl.EnableVertexAttribArray(3);
+
+    m_bleedingNear.assign(numVertices, 0.0F);
+    gl.GenBuffers(1, &m_bleedingBuffer);
+    gl.BindBuffer(GL_ARRAY_BUFFER, m_bleedingBuffer);
+    gl.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(numVertices * sizeof(float)),
+                  m_bleedingNear.data(), GL_DYNAMIC_DRAW);
+    gl.VertexAttribPointer(4, 1, GL_FLOAT, GL_FALSE, sizeof(float), nullptr);
+    gl.EnableVertexAttribArray(4);
 
     std::vector<GLuint> indices;
     indices.reserve(m_triangles.size() * 3);
@@ -134,6 +144,7 @@ EndoscopeView::~EndoscopeView()
     m_gl.DeleteBuffers(1, &m_dynamicBuffer);
     m_gl.DeleteBuffers(1, &m_staticBuffer);
     m_gl.DeleteBuffers(1, &m_indexBuffer);
+    m_gl.DeleteBuffers(1, &m_bleedingBuffer);
     m_gl.DeleteVertexArrays(1, &m_vao);
     m_gl.DeleteVertexArrays(1, &m_screenVao);
     m_gl.DeleteTextures(1, &m_mucosa);
@@ -158,6 +169,56 @@ void EndoscopeView::setWallPositions(const Eigen::Matrix3Xd& positions)
     m_gl.BindBuffer(GL_ARRAY_BUFFER, m_dynamicBuffer);
     m_gl.BufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(m_upload.size() * sizeof(float)),
                        m_upload.data());
+}
+
+void EndoscopeView::setBleedingMarks(const std::vector<BleedingMark>& marks)
+{
+    const size_t count = std::min(marks.size(), static_cast<size_t>(kMaxBleedingMarks));
+    if (std::equal(marks.begin(), marks.begin() + static_cast<long>(count), m_marks.begin(), m_marks.end())) {
+        return;
+    }
+    const std::vector<BleedingMark> previous = std::move(m_marks);
+    m_marks.assign(marks.begin(), marks.begin() + static_cast<long>(count));
+    m_markPlaces.resize(count);
+    m_markUniforms.resize(4 * count);
+    for (size_t k = 0; k < count; ++k) {
+        const BleedingMark& mark = m_marks[k];
+        // A mark keeps its rest point; only a new one is looked up on the chart.
+        if (k >= previous.size() || previous[k].restPoint != mark.restPoint) {
+            m_markPlaces[k] = chartPlaceAt(m_restVertices, m_chart, mark.restPoint);
+        }
+        const WallPlace& place = m_markPlaces[k];
+        m_markUniforms[4 * k] = static_cast<float>(place.arcLength * 1000.0);
+        m_markUniforms[4 * k + 1] = static_cast<float>(std::remainder(place.angle, 2.0 * std::numbers::pi));
+        m_markUniforms[4 * k + 2] = static_cast<float>(mark.radius * 1000.0);
+        m_markUniforms[4 * k + 3] = static_cast<float>(std::clamp(mark.opacity, 0.0, 1.0));
+    }
+    // A fragment within a mark's radius lies in a triangle with a vertex
+    // within the radius plus one edge (the visual mesh's edges are 2-3 mm).
+    constexpr double kReach = 4e-3;  // m beyond the radius
+    std::fill(m_bleedingNear.begin(), m_bleedingNear.end(), 0.0F);
+    for (size_t v = 0; v < m_bleedingNear.size(); ++v) {
+        const double s = m_chart[3 * v];
+        const double y = m_chart[3 * v + 1];
+        const double z = m_chart[3 * v + 2];
+        const double r = std::hypot(y, z);
+        const double angle = std::atan2(z, y);
+        for (size_t k = 0; k < m_marks.size(); ++k) {
+            const double ds = s - m_markPlaces[k].arcLength;
+            const double reach = m_marks[k].radius + kReach;
+            if (std::abs(ds) > reach) {
+                continue;
+            }
+            const double arc = r * std::remainder(angle - m_markPlaces[k].angle, 2.0 * std::numbers::pi);
+            if (ds * ds + arc * arc <= reach * reach) {
+                m_bleedingNear[v] = 1.0F;
+                break;
+            }
+        }
+    }
+    m_gl.BindBuffer(GL_ARRAY_BUFFER, m_bleedingBuffer);
+    m_gl.BufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(m_bleedingNear.size() * sizeof(float)),
+                       m_bleedingNear.data());
 }
 
 double EndoscopeView::wallDistanceAhead(const Eigen::Vector3d& point, const Eigen::Vector3d& forward,
@@ -225,6 +286,11 @@ void EndoscopeView::render(const CameraPose& pose, const LensState& lens, int wi
     gl.Uniform1f(m_wall->uniform("uSpotExponent"), static_cast<float>(m_parameters.spotExponent));
     gl.Uniform1f(m_wall->uniform("uSpecular"), static_cast<float>(m_parameters.specular));
     gl.Uniform1f(m_wall->uniform("uBumpDepth"), static_cast<float>(m_parameters.bumpDepth));
+    gl.Uniform1i(m_wall->uniform("uBleedingCount"), static_cast<GLint>(m_marks.size()));
+    if (!m_marks.empty()) {
+        gl.Uniform4fv(m_wall->uniform("uBleeding"), static_cast<GLsizei>(m_marks.size()),
+                      m_markUniforms.data());
+    }
     gl.ActiveTexture(GL_TEXTURE1);
     gl.BindTexture(GL_TEXTURE_2D, m_mucosa);
     gl.Uniform1i(m_wall->uniform("uMucosa"), 1);

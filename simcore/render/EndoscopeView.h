@@ -26,6 +26,12 @@
 /// the view axis at d below
 /// autoLightDistance D_a, the light is scaled by max((d / D_a)^2, 0.02), as a
 /// video processor's automatic brightness keeps a near wall from glaring.
+/// Bleeding marks (setBleedingMarks): each mark darkens the albedo towards
+///   haemorrhage red within its radius on the chart, the rim broken by the
+///   baked relief noise and softened over the outer 35%. The marks are a
+///   uniform array in chart coordinates, so they stay at their place of the
+///   tissue; a per-vertex flag (set when the marks change) limits the
+///   per-fragment loop to triangles within reach of a mark.
 /// Red-out: amount = clamp((D_red - d) / (D_red - D_contact), 0, 1), d the
 /// distance from the lens to the nearest wall vertex ahead of it.
 
@@ -38,6 +44,7 @@
 #include <Eigen/Core>
 
 #include <memory>
+#include <vector>
 
 namespace colonosim::render {
 
@@ -60,6 +67,10 @@ public:
     /// surface.rest, e.g. MeshMapping::apply of the physics positions).
     /// Computes the smooth normals and uploads both.
     void setWallPositions(const Eigen::Matrix3Xd& positions);
+
+    /// The contact bleeding marks to draw (at most kMaxBleedingMarks; more
+    /// are ignored). Cheap when unchanged; otherwise O(vertices x marks).
+    void setBleedingMarks(const std::vector<BleedingMark>& marks);
 
     /// Draws the view into `framebuffer` (0: the context's default) of
     /// width x height pixels.
@@ -90,6 +101,7 @@ private:
     GLuint m_dynamicBuffer = 0;
     GLuint m_staticBuffer = 0;
     GLuint m_indexBuffer = 0;
+    GLuint m_bleedingBuffer = 0;  ///< 1 float per vertex: 1 within reach of a mark
     GLsizei m_numIndices = 0;
     GLuint m_mucosa = 0;  ///< the baked, tiling mucosa texture (Shaders.h, kMucosaBake)
     GLuint m_targetFramebuffer = 0;
@@ -108,6 +120,12 @@ private:
     Eigen::Matrix3Xd m_positions;
     Eigen::Matrix3Xd m_normals;
     std::vector<float> m_upload;
+    std::vector<float> m_chart;           ///< the surface's chart, 3 per vertex (m)
+    Eigen::Matrix3Xd m_restVertices;      ///< the surface's rest vertices (m), to place marks on the chart
+    std::vector<BleedingMark> m_marks;    ///< as last set
+    std::vector<WallPlace> m_markPlaces;  ///< each mark's place on the chart
+    std::vector<float> m_markUniforms;    ///< 4 per mark: s (mm), angle (rad), radius (mm), opacity
+    std::vector<float> m_bleedingNear;    ///< per vertex
     double m_redOut = 0.0;
 };
 

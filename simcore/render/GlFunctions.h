@@ -57,6 +57,7 @@ using GetProcAddress = std::function<void*(const char* name)>;
     X(PFNGLUNIFORM2FPROC, Uniform2f)                                                                         \
     X(PFNGLUNIFORM3FPROC, Uniform3f)                                                                         \
     X(PFNGLUNIFORM4FPROC, Uniform4f)                                                                         \
+    X(PFNGLUNIFORM4FVPROC, Uniform4fv)                                                                       \
     X(PFNGLUNIFORMMATRIX3FVPROC, UniformMatrix3fv)                                                           \
     X(PFNGLGENVERTEXARRAYSPROC, GenVertexArrays)                                                             \
     X(PFNGLBINDVERTEXARRAYPROC, BindVertexArray)                                                             \

@@ -49,10 +49,12 @@ layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
 layout(location = 2) in vec3 aSurface;   // chart: s, r cos(theta), r sin(theta) (m)
 layout(location = 3) in vec4 aFinding;   // lesion weight, tissue code, stool, diverticulum
+layout(location = 4) in float aBleedingNear;  // 1 within reach of a bleeding mark
 out vec3 vWorld;
 out vec3 vNormal;
 out vec3 vSurface;
 out vec4 vFinding;
+out float vBleedingNear;
 void main()
 {
     vec3 c;
@@ -61,6 +63,7 @@ void main()
     vNormal = aNormal;
     vSurface = aSurface;
     vFinding = aFinding;
+    vBleedingNear = aBleedingNear;
 }
 )";
 
@@ -165,8 +168,11 @@ in vec3 vWorld;
 in vec3 vNormal;
 in vec3 vSurface;
 in vec4 vFinding;
+in float vBleedingNear;
 out vec4 fragColour;
 uniform sampler2D uMucosa;
+uniform int uBleedingCount;
+uniform vec4 uBleeding[64];         // kMaxBleedingMarks: s (mm), angle (rad), radius (mm), opacity
 uniform vec3 uLightPosition;
 uniform float uLightIntensity;      // irradiance scale at 1 cm
 uniform float uSpotExponent;
@@ -234,6 +240,23 @@ void main()
     // Residual stool: brown-yellow patches covering the given fraction.
     float stoolMask = smoothstep(1.0 - vFinding.z, 1.0 - vFinding.z + 0.08, m.b) * step(0.001, vFinding.z);
     albedo = mix(albedo, vec3(0.58, 0.36, 0.12), stoolMask);
+    // Contact bleeding marks: submucosal haemorrhage, dark red under the
+    // epithelium, the rim broken by the relief noise and soft over its outer part.
+    if (vBleedingNear > 0.0) {
+        float r = length(chart.yz);
+        float angle = atan(chart.z, chart.y);
+        float blood = 0.0;
+        for (int k = 0; k < uBleedingCount; ++k) {
+            vec4 mark = uBleeding[k];
+            float turn = angle - mark.y;
+            turn -= 6.2831853 * floor(turn / 6.2831853 + 0.5);
+            float d = length(vec2(chart.x - mark.x, r * turn));
+            float rim = mark.z * (0.75 + 0.5 * m.a);
+            blood = max(blood, mark.w * (1.0 - smoothstep(0.65 * rim, rim, d)));
+        }
+        vec3 haemorrhage = vec3(0.42, 0.03, 0.04) * (0.8 + 0.4 * m.g);
+        albedo = mix(albedo, haemorrhage, blood);
+    }
 
     // Light at the tip: inverse-square fall-off and the light guide's cone.
     float spot = pow(max(dot(-L, uViewAxis), 0.0), uSpotExponent);

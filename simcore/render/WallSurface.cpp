@@ -1,10 +1,13 @@
 #include "simcore/render/WallSurface.h"
 
+#include "simcore/render/CentrelineChart.h"
+#include "simcore/render/LaplaceChart.h"
+
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <numbers>
 #include <stdexcept>
+#include <string>
 
 namespace colonosim::render {
 
@@ -14,20 +17,6 @@ int sampleAt(const geometry::Centreline& centreline, double arcLength)
     const auto it = std::lower_bound(centreline.arcLength.begin(), centreline.arcLength.end(), arcLength);
     const int k = static_cast<int>(it - centreline.arcLength.begin());
     return std::clamp(k, 0, centreline.numPoints() - 1);
-}
-
-int nearestSample(const geometry::Centreline& centreline, const Eigen::Vector3d& p)
-{
-    int best = 0;
-    double bestDistance = std::numeric_limits<double>::max();
-    for (int k = 0; k < centreline.numPoints(); ++k) {
-        const double d = (centreline.points[static_cast<size_t>(k)] - p).squaredNorm();
-        if (d < bestDistance) {
-            bestDistance = d;
-            best = k;
-        }
-    }
-    return best;
 }
 
 /// Inward relief (m, positive towards the centreline) and colour weight of a
@@ -59,6 +48,24 @@ Eigen::Vector3d wallPoint(const geometry::Centreline& centreline, const WallPlac
            centreline.radius[k] * (std::cos(place.angle) * n + std::sin(place.angle) * b);
 }
 
+WallPlace chartPlaceAt(const Eigen::Matrix3Xd& restVertices, const std::vector<float>& chart,
+                       const Eigen::Vector3d& p)
+{
+    if (restVertices.cols() == 0 || chart.size() != 3 * static_cast<size_t>(restVertices.cols())) {
+        throw std::invalid_argument("chartPlaceAt: " + std::to_string(chart.size()) + " chart values for " +
+                                    std::to_string(restVertices.cols()) + " vertices; 3 per vertex required");
+    }
+    Eigen::Index nearest = 0;
+    (restVertices.colwise() - p).colwise().squaredNorm().minCoeff(&nearest);
+    const auto k = static_cast<size_t>(nearest);
+    return {chart[3 * k], std::atan2(chart[3 * k + 2], chart[3 * k + 1])};
+}
+
+WallPlace chartPlaceAt(const WallSurface& surface, const Eigen::Vector3d& p)
+{
+    return chartPlaceAt(surface.rest.vertices, surface.chart, p);
+}
+
 WallSurface buildWallSurface(const geometry::TriangleMesh& visualRest, const geometry::Centreline& centreline,
                              const WallFindings& findings)
 {
@@ -68,7 +75,6 @@ WallSurface buildWallSurface(const geometry::TriangleMesh& visualRest, const geo
     WallSurface surface;
     surface.rest = visualRest;
     const int n = visualRest.numVertices();
-    surface.chart.resize(static_cast<size_t>(n) * 3);
     surface.finding.assign(static_cast<size_t>(n) * 4, 0.0F);
     surface.vertexSegment.resize(static_cast<size_t>(n));
 
@@ -83,40 +89,13 @@ WallSurface buildWallSurface(const geometry::TriangleMesh& visualRest, const geo
     surface.lesionTops = lesionCentres;
     std::vector<double> lesionTopHeight(findings.lesions.size(), -1.0);
 
-    // Nearest samples of consecutive vertices are close: search a window
-    // around the previous one first, and the whole centreline when the
-    // window's best lies on its edge.
-    int previous = 0;
-    constexpr int kWindow = 40;
+    const std::vector<int> nearest = nearestCentrelineSamples(visualRest, centreline);
+    surface.chart = laplaceChart(visualRest, centreline);
     for (int i = 0; i < n; ++i) {
         const Eigen::Vector3d v = visualRest.vertices.col(i);
-        const int from = std::max(0, previous - kWindow);
-        const int to = std::min(centreline.numPoints() - 1, previous + kWindow);
-        int k = from;
-        double best = std::numeric_limits<double>::max();
-        for (int j = from; j <= to; ++j) {
-            const double d = (centreline.points[static_cast<size_t>(j)] - v).squaredNorm();
-            if (d < best) {
-                best = d;
-                k = j;
-            }
-        }
-        if ((k == from && from > 0) || (k == to && to < centreline.numPoints() - 1)) {
-            k = nearestSample(centreline, v);
-        }
-        previous = k;
-        const auto ks = static_cast<size_t>(k);
-        const Eigen::Vector3d offset = v - centreline.points[ks];
-        const Eigen::Vector3d& normal = centreline.normals[ks];
-        const Eigen::Vector3d binormal = centreline.tangents[ks].cross(normal);
-        const double theta = std::atan2(offset.dot(binormal), offset.dot(normal));
         const auto iu = static_cast<size_t>(i);
-        // Arc length continued along the tangent from the nearest sample,
-        // so that it is continuous between samples.
-        const double along = centreline.arcLength[ks] + offset.dot(centreline.tangents[ks]);
-        surface.chart[3 * iu] = static_cast<float>(along);
-        surface.chart[3 * iu + 1] = static_cast<float>(centreline.radius[ks] * std::cos(theta));
-        surface.chart[3 * iu + 2] = static_cast<float>(centreline.radius[ks] * std::sin(theta));
+        const auto ks = static_cast<size_t>(nearest[iu]);
+        const Eigen::Vector3d offset = v - centreline.points[ks];
         surface.vertexSegment[iu] = centreline.segment[ks];
         surface.finding[4 * iu + 2] =
             static_cast<float>(findings.stoolFraction[static_cast<size_t>(centreline.segment[ks])]);

@@ -43,6 +43,8 @@ enum class LesionTissue : std::uint8_t { Adenoma, Serrated, Cancer };
 struct WallPlace {
     double arcLength = 0.0;
     double angle = 0.0;
+
+    bool operator==(const WallPlace&) const = default;
 };
 
 struct Lesion {
@@ -56,6 +58,21 @@ struct Diverticulum {
     WallPlace place;
     double diameter = 0.006;  ///< m
 };
+
+/// A contact bleeding mark (a submucosal haemorrhage from the scope's
+/// pressure): a dark-red spot of `radius` around the chart place of
+/// `restPoint` (chartPlaceAt), drawn over the mucosa with `opacity`, with a
+/// noise-edged rim from the chart's relief.
+struct BleedingMark {
+    Eigen::Vector3d restPoint = Eigen::Vector3d::Zero();  ///< m, the marked wall point at rest
+    double radius = 0.002;                                ///< m, on the wall
+    double opacity = 0.6;                                 ///< 0..1
+
+    bool operator==(const BleedingMark&) const = default;
+};
+
+/// The most bleeding marks a view draws (the rest are ignored).
+inline constexpr int kMaxBleedingMarks = 64;
 
 struct WallFindings {
     std::vector<Lesion> lesions;
@@ -73,6 +90,15 @@ struct WallSurface {
 
 /// The point of the distended wall (centreline radius) at a place, m.
 [[nodiscard]] Eigen::Vector3d wallPoint(const geometry::Centreline& centreline, const WallPlace& place);
+
+/// The place of the rest point `p` on `surface`'s chart: the chart of the
+/// rest vertex nearest `p` (arc length, and the clock angle of its chart
+/// point), so that a mark drawn at it lies where the texture puts that point.
+[[nodiscard]] WallPlace chartPlaceAt(const WallSurface& surface, const Eigen::Vector3d& p);
+/// The same on a rest mesh's vertices and its chart (3 floats per vertex);
+/// throws std::invalid_argument when their sizes disagree.
+[[nodiscard]] WallPlace chartPlaceAt(const Eigen::Matrix3Xd& restVertices, const std::vector<float>& chart,
+                                     const Eigen::Vector3d& p);
 
 /// Builds the chart, findings and relief for `visualRest`. Throws
 /// std::invalid_argument when the centreline has fewer than two samples.

@@ -3,8 +3,8 @@
 #include "simcore/scope/Rotation.h"
 
 #include <algorithm>
-#include <cstdlib>
 #include <cmath>
+#include <cstdlib>
 #include <numbers>
 #include <string>
 
@@ -143,8 +143,7 @@ void Colonoscope::beginStep(double dt, double dampingRatio)
         const Eigen::Vector3d& x = m_rod.position[i];
         const double inertia = std::max(0.0, second - 2.0 * x.dot(first) + x.squaredNorm() * mass);
         const Eigen::Vector3d k3 = m_rod.jointStiffness(k);
-        static const double floorRatio = std::getenv("DMIN") ? std::atof(std::getenv("DMIN")) : 0.0;
-        m_rod.damping[i] = (2.0 * dampingRatio / dt * (k3 * inertia).cwiseSqrt()).cwiseMax(floorRatio * k3);
+        m_rod.damping[i] = 2.0 * dampingRatio / dt * (k3 * inertia).cwiseSqrt();
         const double m = k == n - 1 ? 0.5 * element : element;
         mass += m;
         first += m * x;

@@ -48,7 +48,7 @@ TEST(Cli, HelpExitsZero)
 TEST(Cli, UnknownSubcommandAndOptionExitTwo)
 {
     EXPECT_EQ(run("fly").status, 2);
-    const Result r = run("demo --speed 3");
+    const Result r = run("demo --tissue --speed 3");
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.output.find("--speed"), std::string::npos) << r.output;
 }
@@ -56,7 +56,7 @@ TEST(Cli, UnknownSubcommandAndOptionExitTwo)
 TEST(Cli, OutOfRangeNumberNamesOptionValueAndRange)
 {
     for (const char* bad : {"--duration -1", "--duration abc", "--duration nan", "--duration 1e9"}) {
-        const Result r = run(std::string("demo ") + bad);
+        const Result r = run(std::string("demo --tissue ") + bad);
         EXPECT_EQ(r.status, 2) << bad;
         EXPECT_NE(r.output.find("--duration"), std::string::npos) << r.output;
         EXPECT_NE(r.output.find("[0.05, 60] s"), std::string::npos) << r.output;
@@ -65,15 +65,25 @@ TEST(Cli, OutOfRangeNumberNamesOptionValueAndRange)
 
 TEST(Cli, UnknownIntegratorIsRefusedWithTheAllowedNames)
 {
-    const Result r = run("demo --integrator verlet");
+    const Result r = run("demo --tissue --integrator verlet");
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.output.find("verlet"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("symplectic_euler"), std::string::npos) << r.output;
 }
 
+TEST(Cli, WithoutADisplayTheWindowIsRefused)
+{
+    // (That no subcommand runs the headless demonstration is checked in DemoCliTest: it takes a while.)
+    const std::string noDisplay =
+        std::string("env -u DISPLAY -u WAYLAND_DISPLAY -u QT_QPA_PLATFORM ") + COLONOSIM_EXECUTABLE;
+    const Result window = colonosim::testing::runCommand(noDisplay, "gui");
+    EXPECT_EQ(window.status, 2) << window.output;
+    EXPECT_NE(window.output.find("needs a display"), std::string::npos) << window.output;
+}
+
 TEST(Cli, DemoRunsAndReportsJson)
 {
-    const Result r = run("demo --duration 0.06 --json", true);
+    const Result r = run("demo --tissue --duration 0.06 --json", true);
     ASSERT_EQ(r.status, 0) << r.output;
     const nlohmann::json summary = nlohmann::json::parse(r.output);
     EXPECT_GE(summary["physics_nodes"].get<int>(), 1800);

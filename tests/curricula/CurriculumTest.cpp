@@ -42,6 +42,8 @@ TEST(Curriculum, TheCoreFileReadsAndIsOrderedEasyToHard)
         } else {
             EXPECT_TRUE(task.available) << task.id;
         }
+        // The imager is a learning aid: shown everywhere except the complex-anatomy assessment.
+        EXPECT_EQ(task.shapeView, task.id != "complex-anatomy") << task.id;
     }
 }
 
@@ -92,6 +94,12 @@ const std::string kUnavailable =
     "available=\"false\"><instructions>i</instructions><objective>o</objective><constraints/></task></module>"
     "</curriculum>";
 
+const std::string kShapeView =
+    "<curriculum name=\"c\" version=\"1\"><module id=\"m\" title=\"M\"><task id=\"a\" title=\"A\" "
+    "benchmark=\"b\" "
+    "shape_view=\"sometimes\"><instructions>i</instructions><objective>o</objective><constraints/></task>"
+    "</module></curriculum>";
+
 INSTANTIATE_TEST_SUITE_P(
     Table, CurriculumErrors,
     ::testing::Values(BadFile{"<curriculum", "bad.xml:1:"},
@@ -99,6 +107,7 @@ INSTANTIATE_TEST_SUITE_P(
                       BadFile{kRequire.c_str(), "require = \"wibble(3mm\""},
                       BadFile{kPrerequisite.c_str(), "prerequisite \"later\" is not a task defined earlier"},
                       BadFile{kUnavailable.c_str(), "must say why"},
+                      BadFile{kShapeView.c_str(), "shape_view = \"sometimes\" is not one of true, false"},
                       BadFile{"<course/>", "root element must be <curriculum>"}));
 
 TEST(Progression, TwoConsecutiveMetBenchmarksUnlockWhatFollows)

@@ -3,6 +3,8 @@
 // administrator, an instructor assigned to cohort "A", student ada in "A" and
 // student bob in no cohort of the instructor's (the matrix adds bob to cohort
 // "B" and the instructor to cohort "C", so the instructor never gains bob).
+#include "curricula/Certification.h"
+#include "db/CertificationRules.h"
 #include "db/Database.h"
 #include "db/Records.h"
 #include "tests/db/TempDir.h"
@@ -80,6 +82,25 @@ TEST(Authorization, EveryRoleAgainstEveryOperation)
              r.issueCertificate(a, "bob", "sha-" + a.name, "sig", "key");
          },
          true, false, false},
+        {"import a certification rule set",
+         [&database](Records&, const Actor& a, qint64) {
+             // A new version each time it is allowed, so each import is a real one.
+             db::CertificationRules rules(database);
+             const int next = rules.versions(a).back().version + 1;
+             std::string xml = curricula::coreRuleSetXml();
+             xml.replace(xml.find("version=\"1\""), 11, "version=\"" + std::to_string(next) + "\"");
+             (void)rules.import(a, xml, "rules.xml");
+         },
+         true, false, false},
+        {"activate a certification rule set",
+         [&database](Records&, const Actor& a, qint64) { db::CertificationRules(database).activate(a, 1); },
+         true, false, false},
+        {"read the active certification rule set",
+         [&database](Records&, const Actor& a, qint64) {
+             (void)db::CertificationRules(database).active(a);
+             (void)db::CertificationRules(database).versions(a);
+         },
+         true, true, true},
         {"read the audit log", [](Records& r, const Actor& a, qint64) { (void)r.audit(a); }, true, false,
          false},
         {"take a backup",
@@ -99,6 +120,10 @@ TEST(Authorization, EveryRoleAgainstEveryOperation)
          [](Records& r, const Actor& a, qint64) { (void)r.progress(a, "bob", "core"); }, true, false, false},
         {"read bob's recording", [](Records& r, const Actor& a, qint64 s) { (void)r.sessionRecording(a, s); },
          true, false, false},
+        {"read bob's trace", [](Records& r, const Actor& a, qint64 s) { (void)r.sessionTrace(a, s); }, true,
+         false, false},
+        {"read bob's case", [](Records& r, const Actor& a, qint64 s) { (void)r.sessionCase(a, s); }, true,
+         false, false},
         {"complete bob's session",
          [](Records& r, const Actor& a, qint64 s) { r.completeSession(a, s, db::SessionResult{}); }, false,
          false, false},

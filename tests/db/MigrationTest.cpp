@@ -59,7 +59,8 @@ TEST(Migrations, FromEmptyReachTheLatestVersion)
     RawConnection raw(dir / "records.sqlite");
     for (const char* table :
          {"users", "cohorts", "cohort_members", "cohort_instructors", "cases", "curricula", "sessions",
-          "events", "metrics", "scores", "progress", "certificates", "audit", "benchmark_sets"}) {
+          "events", "metrics", "scores", "progress", "certificates", "audit", "benchmark_sets",
+          "case_assignments", "certification_rule_sets"}) {
         EXPECT_EQ(raw.scalar(QStringLiteral(
                                  "SELECT count(*) FROM sqlite_master WHERE type = 'table' AND name = '%1'")
                                  .arg(QString::fromLatin1(table))),
@@ -98,6 +99,15 @@ TEST_P(FromEarlierVersion, KeepsTheDataAndReachesTheLatest)
         query.exec(QStringLiteral("SELECT count(*) FROM sqlite_master WHERE name = 'sessions_by_user'")) &&
         query.next());
     EXPECT_EQ(query.value(0).toInt(), 1);
+    // Migration 5 stores the shipped core rule set as version 1, active, once.
+    ASSERT_TRUE(
+        query.exec(QStringLiteral("SELECT count(*), min(version), min(active), min(imported_by IS NULL) "
+                                  "FROM certification_rule_sets")) &&
+        query.next());
+    EXPECT_EQ(query.value(0).toInt(), 1);
+    EXPECT_EQ(query.value(1).toInt(), 1);
+    EXPECT_EQ(query.value(2).toInt(), 1);
+    EXPECT_EQ(query.value(3).toInt(), 1);
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryVersion, FromEarlierVersion, ::testing::Range(0, db::latestSchemaVersion()));
@@ -126,17 +136,20 @@ TEST(AuditLog, RecordsChangesAndRefusesUpdateAndDelete)
     records.addUser(admin, "ada", db::Role::Student, "ada-password");
     records.setPassword(admin, "ada", "ada-password-2");
     const auto log = records.audit(admin);
-    ASSERT_EQ(log.size(), 3u);
+    ASSERT_EQ(log.size(), 4u);
+    // The migration stored the shipped certification rule set; then the users.
+    EXPECT_EQ(log[0].table, "certification_rule_sets");
     EXPECT_EQ(log[0].actor, "(system)");
-    EXPECT_EQ(log[1].actor, "root");
-    EXPECT_EQ(log[1].detail, "ada student");
-    EXPECT_EQ(log[2].action, "update");
-    EXPECT_NE(log[2].detail.find("password changed"), std::string::npos);
+    EXPECT_EQ(log[1].actor, "(system)");
+    EXPECT_EQ(log[2].actor, "root");
+    EXPECT_EQ(log[2].detail, "ada student");
+    EXPECT_EQ(log[3].action, "update");
+    EXPECT_NE(log[3].detail.find("password changed"), std::string::npos);
     QSqlQuery query(database.connection());
     EXPECT_FALSE(query.exec(QStringLiteral("UPDATE audit SET detail = 'forged'")));
     EXPECT_NE(query.lastError().text().toStdString().find("append-only"), std::string::npos);
     EXPECT_FALSE(query.exec(QStringLiteral("DELETE FROM audit")));
-    EXPECT_EQ(records.audit(admin).size(), 3u);
+    EXPECT_EQ(records.audit(admin).size(), 4u);
 }
 
 TEST(Passwords, AreStoredAsArgon2idAndVerified)

@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <thread>
 
@@ -39,8 +40,9 @@ TEST(HdcEndToEnd, TheSimulatedDeviceDrivesAnExpertRunThroughTheHdc)
         expertSamples = expert.recording().samples.size();
     }
     const double dt = settings.stepping.loopStep;
-    // The HDC paces the hand by the simulator's progress (the simulator is
-    // slower than real time here), so the hand follows the recorded expert.
+    // The HDC paces the hand by the simulator's progress, so the hand follows
+    // the recorded expert whether the simulator keeps real time or falls
+    // behind it (a loaded machine).
     std::atomic<double> simulatorTime{0.0};
     auto trajectory = [&](double) {
         const auto i = static_cast<size_t>(std::clamp(simulatorTime.load() / dt, 0.0, double(kSteps - 1)));
@@ -57,12 +59,17 @@ TEST(HdcEndToEnd, TheSimulatedDeviceDrivesAnExpertRunThroughTheHdc)
     procedure::InputSample input;
     double inputTime = 0.0;
     bool connected = false;
+    int knownConnection = 0;
     long frames = 0;
     double largestLag = 0.0;
     std::unique_ptr<SimulatedDevice> secondDevice;
     std::unique_ptr<HdcController> second;
     std::jthread secondThread;
+    // Like the trainer's loop, the simulator never runs ahead of the wall
+    // clock: a device frame arrives each millisecond, one per loop step.
+    const auto start = std::chrono::steady_clock::now();
     for (int step = 0; step < kSteps; ++step) {
+        std::this_thread::sleep_until(start + std::chrono::duration<double>(step * dt));
         if (step == kSteps / 2) {
             firstThread.request_stop();  // the first HDC goes away mid-procedure
             firstThread.join();
@@ -70,8 +77,17 @@ TEST(HdcEndToEnd, TheSimulatedDeviceDrivesAnExpertRunThroughTheHdc)
             second = std::make_unique<HdcController>(*secondDevice, parameters, "127.0.0.1", server.port());
             secondThread = std::jthread([&](std::stop_token stop) { second->run(stop, 60.0); });
         }
-        if (server.connected() != connected) {
-            connected = server.connected();
+        // As HdcOperator::recordConnection: a link replaced between two
+        // steps is a disconnection and a connection (the server counts them).
+        const bool now = server.connected();
+        const int connection = server.connections();
+        if (connected && connection != knownConnection) {
+            connected = false;
+            loop.noteDevice("simulated", false);
+        }
+        if (now != connected) {
+            connected = now;
+            knownConnection = connection;
             loop.noteDevice("simulated", connected);
         }
         if (step == 0 || step == kSteps / 2 + 1) {

@@ -5,9 +5,11 @@
 
 #include "simcore/geometry/ProceduralColon.h"
 #include "simcore/physics/ColonBody.h"
+#include "simcore/physics/Gravity.h"
 #include "simcore/physics/OrganConstraint.h"
 #include "simcore/physics/StaticSolver.h"
 #include "simcore/physics/TissueSimulation.h"
+#include "simcore/physics/ViscousDrag.h"
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
@@ -258,6 +260,50 @@ TEST(ActiveRegion, ErrorAgainstTheFullSimulationIsSmall)
     const double error = (result[0] - result[1]).colwise().norm().maxCoeff();
     EXPECT_LT(error, 0.01 * displacement)
         << "max error " << error << " m against a displacement of " << displacement;
+}
+
+TEST(ActiveRegion, AwakeNodesFeelTheSameForceAndSleepingOnesAreNotSummed)
+{
+    // The integrators read the force on awake, free nodes only, so the terms
+    // sum over those (AwakeEntries.h). With every other node asleep, the force
+    // on each awake node equals the all-awake force bit for bit; gravity and
+    // the surrounding drag, per-node terms, leave a sleeping node untouched.
+    ColonBody colon =
+        buildColonBody(defaultAnatomy(), TissueParameters{}, EnvironmentParameters{}, {0.6, 0.95});
+    TissueBody& body = colon.body;
+    const int n = body.numNodes();
+    Velocities v = Velocities::Zero(3, n);
+    for (int i = 0; i < n; ++i) {
+        v.col(i) = Eigen::Vector3d(std::sin(i), std::cos(2.0 * i), 0.5) * 1e-2;  // m/s, arbitrary
+    }
+    Forces all;
+    body.computeForces(body.positions(), v, all);
+    std::vector<std::uint8_t> awake(static_cast<size_t>(n));
+    for (int i = 0; i < n; ++i) {
+        awake[static_cast<size_t>(i)] = i % 2 == 0 ? 1 : 0;
+    }
+    body.setAwake(awake);
+    Forces some;
+    body.computeForces(body.positions(), v, some);
+    int compared = 0;
+    for (const int i : body.integratedNodes()) {
+        ASSERT_EQ(i % 2, 0) << "node " << i << " is asleep but integrated";
+        ASSERT_EQ(some.col(i), all.col(i)) << "node " << i;
+        ++compared;
+    }
+    EXPECT_GT(compared, n / 3);
+
+    // Per-node terms alone, on a body with no springs: nothing on sleeping nodes.
+    const Eigen::VectorXd mass = Eigen::VectorXd::Constant(3, 2e-3);
+    TissueBody three(Positions::Zero(3, 3), mass);
+    three.addForceTerm(std::make_unique<Gravity>(mass, Eigen::Vector3d(0.0, 9.81, 0.0)));
+    three.addForceTerm(std::make_unique<ViscousDrag>(mass, 10.0));
+    three.setAwake({1, 0, 1});
+    Forces f;
+    three.computeForces(three.positions(), Velocities::Ones(3, 3), f);
+    EXPECT_EQ(f.col(1), Eigen::Vector3d::Zero());
+    EXPECT_DOUBLE_EQ(f(1, 0), 2e-3 * 9.81 - 10.0 * 2e-3);
+    EXPECT_DOUBLE_EQ(f(1, 2), f(1, 0));
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <vector>
 
 namespace {
 
@@ -66,6 +67,7 @@ TEST(ProcedureLoop, TheExpertRunsStably)
     EXPECT_LT(summary.peakHandleForce, 25.0);
     EXPECT_GT(loop.scope().numInsertedNodes(), 4) << "the scope went in";
     EXPECT_GT(loop.recording().samples.size(), 300U) << "100 Hz samples";
+    EXPECT_TRUE(loop.bleedingMarks().empty()) << "the expert does not press the wall";
 }
 
 // A session is determined by the case, the build and the input trace:
@@ -142,6 +144,37 @@ TEST(ProcedureLoop, FullDialsWhileJammedStayStable)
         EXPECT_NE(r.message.find("rejected"), std::string::npos);
     }
     EXPECT_LT(summary.peakHandleForce, 50.0);
+    // Pressed this hard, the wall bleeds where the scope pushes it: one
+    // contact_bleeding event per mark, at the mark's onset.
+    EXPECT_GE(loop.bleedingMarks().size(), 1U);
+    std::vector<double> bleedingTimes;
+    for (const auto& e : loop.recording().events) {
+        if (e.kind == procedure::EventKind::ContactBleeding) {
+            bleedingTimes.push_back(e.time);
+        }
+    }
+    ASSERT_EQ(bleedingTimes.size(), loop.bleeding().marks().size());
+    for (size_t k = 0; k < bleedingTimes.size(); ++k) {
+        EXPECT_EQ(bleedingTimes[k], loop.bleeding().marks()[k].onset);
+        EXPECT_GE(loop.bleedingMarks()[k].radius, ProcedureSettings{}.bleeding.minRadius);
+    }
+    EXPECT_EQ(procedure::eventName(procedure::EventKind::ContactBleeding), "contact_bleeding");
+}
+
+// A gentle insertion along the straight rectum (2 cm/s, dials centred)
+// touches the wall without pressing it: no bleeding mark.
+TEST(ProcedureLoop, AGentleStraightInsertionLeavesNoBleedingMark)
+{
+    ProcedureLoop loop(defaultColon(), ProcedureSettings{});
+    InputSample input;
+    double peakWallForce = 0.0;
+    for (int s = 0; s < 2000; ++s) {
+        input.insertion = 0.02 * s / 1000.0;
+        loop.step(input);
+        peakWallForce = std::max(peakWallForce, loop.lastFrame().maxWallForce);
+    }
+    EXPECT_GE(loop.scope().numInsertedNodes(), 2) << "the scope went in";
+    EXPECT_TRUE(loop.bleedingMarks().empty()) << "peak wall force " << peakWallForce << " N";
 }
 
 }  // namespace

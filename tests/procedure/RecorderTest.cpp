@@ -62,6 +62,36 @@ TEST(Recorder, SampleValuesAreRoundedToTheDeclaredResolution)
     EXPECT_EQ(quantizeSample(s).tip, s.tip);
 }
 
+TEST(Recorder, LesionsComingIntoViewAndMarksNameTheLesion)
+{
+    Recorder recorder(RecorderParameters{});
+    const auto at = [&](int step, std::uint32_t inView, bool mark) {
+        ProcedureFrame f;
+        f.time = step * 1e-3;
+        f.lesionsInView = inView;
+        f.input.buttons = mark ? kMarkLesion : 0;
+        recorder.record(f);
+    };
+    at(0, 0, true);       // a mark with nothing in view
+    at(1, 0, false);      // released
+    at(2, 0b100, false);  // lesion 3 comes into view
+    at(3, 0b110, true);   // lesion 2 too; the mark names the first in view
+    at(4, 0b010, false);  // lesion 3 leaves
+    const auto& e = recorder.recording().events;
+    ASSERT_EQ(e.size(), 5U);
+    EXPECT_EQ(e[0].kind, EventKind::LesionMarked);
+    EXPECT_EQ(e[0].detail, "none in view");
+    EXPECT_EQ(e[1].kind, EventKind::LesionInView);
+    EXPECT_EQ(e[1].detail, "lesion 3");
+    EXPECT_DOUBLE_EQ(e[1].time, 0.002);
+    EXPECT_EQ(e[2].kind, EventKind::LesionInView);
+    EXPECT_EQ(e[2].detail, "lesion 2");
+    EXPECT_EQ(e[3].kind, EventKind::LesionMarked);
+    EXPECT_EQ(e[3].detail, "lesion 2");
+    EXPECT_EQ(e[4].kind, EventKind::LesionOutOfView);
+    EXPECT_EQ(e[4].detail, "lesion 3");
+}
+
 TEST(Recorder, EventsFireOnceOnEachEdgeAtTheExactStep)
 {
     RecorderParameters p;
@@ -83,16 +113,40 @@ TEST(Recorder, EventsFireOnceOnEachEdgeAtTheExactStep)
     }
     const std::vector<EventKind> expected{
         EventKind::ExcessiveForceStart, EventKind::ExcessiveForceEnd, EventKind::LoopFormed,
-        EventKind::LoopResolved,        EventKind::LensWash,          EventKind::LesionMarked,
-        EventKind::RedOutStart,         EventKind::RedOutEnd,         EventKind::CecumReached,
-        EventKind::Retroflexion};
+        EventKind::LoopResolved,        EventKind::LensWash,          EventKind::CleaningStart,
+        EventKind::CleaningEnd,         EventKind::LesionMarked,      EventKind::RedOutStart,
+        EventKind::RedOutEnd,           EventKind::CecumReached,      EventKind::Retroflexion};
     EXPECT_EQ(kinds(recorder.recording()), expected);
     const auto& events = recorder.recording().events;
     EXPECT_DOUBLE_EQ(events[0].time, 0.100);
     EXPECT_DOUBLE_EQ(events[1].time, 0.200);
     EXPECT_EQ(events[2].detail, "alpha");
     EXPECT_EQ(events[3].detail, "alpha");
-    EXPECT_DOUBLE_EQ(events[8].time, 0.800);
+    EXPECT_DOUBLE_EQ(events[10].time, 0.800);
+}
+
+TEST(Recorder, CleaningRunsFromTheFirstStepWithWaterOrSuctionHeldToTheFirstWithNeither)
+{
+    Recorder recorder(RecorderParameters{});
+    for (int step = 0; step < 100; ++step) {
+        ProcedureFrame f;
+        f.time = step * 1e-3;
+        // water 10-29, suction 20-39 (one cleaning 10-39), air alone 50-59
+        // (not cleaning), suction again from 70 to the end (left open).
+        f.input.buttons = (step >= 10 && step < 30 ? kWater : 0) | (step >= 20 && step < 40 ? kSuction : 0) |
+                          (step >= 50 && step < 60 ? kAir : 0) | (step >= 70 ? kSuction : 0);
+        recorder.record(f);
+    }
+    const auto& e = recorder.recording().events;
+    const std::vector<EventKind> expected{EventKind::LensWash, EventKind::CleaningStart,
+                                          EventKind::CleaningEnd, EventKind::CleaningStart};
+    ASSERT_EQ(kinds(recorder.recording()), expected);
+    EXPECT_DOUBLE_EQ(e[0].time, 0.010);  // the lens wash stays on the water button's press
+    EXPECT_DOUBLE_EQ(e[1].time, 0.010);
+    EXPECT_DOUBLE_EQ(e[2].time, 0.040);
+    EXPECT_DOUBLE_EQ(e[3].time, 0.070);
+    EXPECT_EQ(eventName(EventKind::CleaningStart), "cleaning_start");
+    EXPECT_EQ(eventName(EventKind::CleaningEnd), "cleaning_end");
 }
 
 TEST(Recorder, CanonicalTextSeesOneUlp)

@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <vector>
+
 namespace {
 
 using namespace colonosim;
@@ -23,13 +25,15 @@ struct Frame {
     double redOut = 0.0;
 };
 
-Frame renderTube(const render::WallFindings& findings, const render::CameraPose& pose, double soiling = 0.0)
+Frame renderTube(const render::WallFindings& findings, const render::CameraPose& pose, double soiling = 0.0,
+                 const std::vector<render::BleedingMark>& marks = {})
 {
     render::OffscreenContext context(kWidth, kHeight);
     const auto tube = colonosim::testing::straightTube(kRadius, kLength, 0.002, 64);
     const auto centreline = colonosim::testing::straightCentreline(kRadius, kLength, 0.001);
     const render::WallSurface surface = render::buildWallSurface(tube, centreline, findings);
     render::EndoscopeView view(context.gl(), surface, render::RenderParameters{});
+    view.setBleedingMarks(marks);
     view.render(pose, {soiling, 0.0}, kWidth, kHeight);
     return {context.readBack(), view.redOut()};
 }
@@ -134,6 +138,48 @@ TEST(EndoscopeView, LesionAheadAppearsWhereTheLensProjectsIt)
     // And on the correct side of the image centre.
     EXPECT_EQ(sx / count > kWidth / 2.0, expected->x() > kWidth / 2.0);
     EXPECT_EQ(sy / count > kHeight / 2.0, expected->y() > kHeight / 2.0);
+}
+
+// A contact bleeding mark 3 cm ahead of the lens: the pixels around where the
+// lens projects its centre are darker and redder than in the same frame
+// without it, and the frame elsewhere is unchanged.
+TEST(EndoscopeView, BleedingMarkAheadIsADarkRedSpotWhereTheLensProjectsIt)
+{
+    const render::WallPlace place{0.05, -0.6};
+    const render::CameraPose pose = axialPose(0.02);
+    const auto centreline = colonosim::testing::straightCentreline(kRadius, kLength, 0.001);
+    const Frame with = renderTube({}, pose, 0.0, {{render::wallPoint(centreline, place), 0.004, 1.0}});
+    const Frame without = renderTube({}, pose);
+    colonosim::testing::saveArtefact(with.image, "bleeding_mark_ahead.png");
+
+    const render::FisheyeLens lens{render::RenderParameters{}.fieldOfView, kWidth, kHeight};
+    const auto centre = lens.project(pose, render::wallPoint(centreline, place));
+    ASSERT_TRUE(centre.has_value());
+    // A 5 x 5 pixel window at the projected centre (the 8 mm spot seen
+    // obliquely from 3-4 cm spans more than that).
+    double lumaWith = 0.0, lumaWithout = 0.0, redWith = 0.0, redWithout = 0.0;
+    const auto redness = [](const render::RgbaImage& image, int x, int y) {
+        const auto* p = image.at(x, y);
+        return p[0] / (1.0 + p[0] + p[1] + p[2]);
+    };
+    for (int dy = -2; dy <= 2; ++dy) {
+        for (int dx = -2; dx <= 2; ++dx) {
+            const int x = static_cast<int>(centre->x()) + dx;
+            const int y = static_cast<int>(centre->y()) + dy;
+            lumaWith += luminance(with.image, x, y);
+            lumaWithout += luminance(without.image, x, y);
+            redWith += redness(with.image, x, y);
+            redWithout += redness(without.image, x, y);
+        }
+    }
+    EXPECT_LT(lumaWith, 0.7 * lumaWithout) << "darker";
+    EXPECT_GT(redWith, redWithout + 0.05 * 25) << "redder (red share of the colour)";
+    // Far from the mark (the opposite wall) nothing changes.
+    const int ox = kWidth - static_cast<int>(centre->x());
+    const int oy = kHeight - static_cast<int>(centre->y());
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_EQ(with.image.at(ox, oy)[c], without.image.at(ox, oy)[c]);
+    }
 }
 
 TEST(EndoscopeView, NearWallDoesNotGlare)

@@ -36,7 +36,12 @@ procedure::Recording handMade()
                 {4.0, EventKind::CecumReached, ""},
                 {6.0, EventKind::RedOutStart, ""},
                 {7.0, EventKind::RedOutEnd, ""},
-                {8.0, EventKind::LesionMarked, ""}};
+                {7.5, EventKind::LesionInView, "lesion 2"},
+                {8.0, EventKind::LesionMarked, "lesion 2"},
+                {8.2, EventKind::LesionOutOfView, "lesion 2"},
+                {8.5, EventKind::LesionMarked, "none in view"},
+                {9.0, EventKind::LesionInView, "lesion 1"},
+                {9.5, EventKind::LesionOutOfView, "lesion 1"}};
     return r;
 }
 
@@ -67,8 +72,12 @@ TEST(Metrics, FromAHandMadeRecording)
     EXPECT_DOUBLE_EQ(m.at("discomfort_peak"), 7.0);
     EXPECT_NEAR(m.at("discomfort_moderate_share"), 0.2, dt / 10.0);
     EXPECT_EQ(m.at("perforation"), 0.0);
+    // Lesion 2 marked 0.5 s after it came into view; lesion 1 seen, never
+    // marked; one mark with nothing in view.
     EXPECT_EQ(m.at("lesions_detected"), 1.0);
     EXPECT_EQ(m.at("lesions_missed"), 1.0);
+    EXPECT_DOUBLE_EQ(m.at("time_to_detection"), 0.5);
+    EXPECT_EQ(m.at("false_lesion_marks"), 1.0);
     EXPECT_NEAR(m.at("tip_path_length"), 0.5 + 0.2, 1e-9);
     EXPECT_NEAR(m.at("insertion_efficiency"), 1.0, 1e-9);
     EXPECT_DOUBLE_EQ(m.at("max_insertion"), 0.5);
@@ -88,6 +97,34 @@ TEST(Metrics, TheCecumNotReachedLeavesTimeToCecumAbsent)
     EXPECT_FALSE(m.contains("time_to_cecum"));
     EXPECT_EQ(m.at("cecal_intubation"), 0.0);
     EXPECT_EQ(m.at("withdrawal_time"), 0.0);
+}
+
+// Effective withdrawal: the cecum at 4 s, the session ends at 10 s; red-out
+// 6-7 s (from handMade) plus the cleaning given here.
+double effectiveWithdrawal(std::vector<procedure::RecordedEvent> cleaning)
+{
+    procedure::Recording r = handMade();
+    r.events.insert(r.events.end(), cleaning.begin(), cleaning.end());
+    return scoring::computeMetrics(r, {}).at("effective_withdrawal_time");
+}
+
+TEST(Metrics, EffectiveWithdrawalLessTheUnionOfRedOutAndCleaning)
+{
+    // Cleaning 6.5-8 s overlaps the red-out 6-7 s: together 6-8 s, 2 s, not 2.5 s.
+    EXPECT_DOUBLE_EQ(
+        effectiveWithdrawal({{6.5, EventKind::CleaningStart, ""}, {8.0, EventKind::CleaningEnd, ""}}), 4.0);
+    // Cleaning 3-4.5 s: only the 0.5 s after the cecum counts; disjoint from the red-out.
+    EXPECT_DOUBLE_EQ(
+        effectiveWithdrawal({{3.0, EventKind::CleaningStart, ""}, {4.5, EventKind::CleaningEnd, ""}}), 4.5);
+    // Cleaning inside the red-out takes nothing more away.
+    EXPECT_DOUBLE_EQ(
+        effectiveWithdrawal({{6.2, EventKind::CleaningStart, ""}, {6.8, EventKind::CleaningEnd, ""}}), 5.0);
+}
+
+TEST(Metrics, ASessionEndingWhileCleaningIsClosedAtTheEnd)
+{
+    // Cleaning from 9 s to the end (10 s) without an end event: 1 s, plus the red-out's 1 s.
+    EXPECT_DOUBLE_EQ(effectiveWithdrawal({{9.0, EventKind::CleaningStart, ""}}), 4.0);
 }
 
 TEST(Benchmarks, MeanSdLimitsAndProficiency)

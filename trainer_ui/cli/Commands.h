@@ -15,6 +15,7 @@ int runProcedure(std::span<char* const> args);
 int runRod(std::span<char* const> args);
 int runCase(std::span<char* const> args);
 int runUser(std::span<char* const> args);
+int runRules(std::span<char* const> args);
 int runProgress(std::span<char* const> args);
 int runReport(std::span<char* const> args);
 int runBackup(std::span<char* const> args);

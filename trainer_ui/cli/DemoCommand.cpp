@@ -1,167 +1,193 @@
 /// \file
-/// `colonosim demo` (and `colonosim` with no arguments until the trainer
-/// exists): a headless demonstration of the simulator's foundation. It builds
-/// the default procedural colon, calibrates the wall, settles it under
-/// gravity and insufflation, pushes on the sigmoid wall as a colonoscope
-/// would, maps the visual mesh, and reports what happened in physical units.
+/// `colonosim demo [--db FILE] [--out DIR] [--max-time S] [--seed N] [--json]` (and `colonosim` with no
+/// arguments on a machine with no display): the whole pipeline, headless, on the records database (the
+/// default one unless --db):
+///   1. generate a case (seed N, no constraints) and store it in the case library;
+///   2. run the scripted expert operator on it for at most S simulated seconds;
+///   3. score the session into the records as the trainee "demo-student" (created on first use, by the
+///      administrator of a fresh database or the one whose password is in COLONOSIM_ADMIN_PASSWORD; its own
+///      password is kept next to the database in FILE.demo-student, mode 0600);
+///   4. write the trainee's PDF progress report (the signed certification report is the administrator's:
+///      colonosim report --format pdf).
+/// It prints where the database, the case and the report are.
+/// `colonosim demo --tissue ...` is the tissue demonstration of the simulator's foundation.
 
-#include "simcore/geometry/CentrelineSampling.h"
-#include "simcore/geometry/MeshMapping.h"
+#include "case_generator/CaseGenerator.h"
+#include "case_generator/CaseWriter.h"
+#include "case_generator/SceneSpec.h"
+#include "db/Password.h"
+#include "scoring/SessionMetrics.h"
 #include "simcore/geometry/ProceduralColon.h"
-#include "simcore/physics/ActiveRegion.h"
-#include "simcore/physics/ColonBody.h"
-#include "simcore/physics/SpringCalibration.h"
-#include "simcore/physics/TissueSimulation.h"
+#include "simcore/procedure/Operator.h"
+#include "trainer_ui/cli/CaseArgument.h"
 #include "trainer_ui/cli/CommandLine.h"
 #include "trainer_ui/cli/Commands.h"
+#include "trainer_ui/cli/RecordsAccess.h"
+#include "trainer_ui/cli/SessionStore.h"
+#include "trainer_ui/reports/TraineeReport.h"
 
 #include <nlohmann/json.hpp>
 
-#include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
 #include <iostream>
 
 namespace colonosim::cli {
 
+int runTissueDemo(std::span<char* const> args);
+
 namespace {
-using Clock = std::chrono::steady_clock;
 
-double seconds(Clock::time_point since)
-{
-    return std::chrono::duration<double>(Clock::now() - since).count();
-}
+constexpr const char* kDemoStudent = "demo-student";
+constexpr const char* kDemoTask = "navigation-straight";
 
-/// The physics node of the sigmoid nearest the middle of the segment.
-int sigmoidNode(const geometry::ColonAnatomy& anatomy)
+/// The demo trainee, created on first use; its password lives in `credentials`.
+db::Actor demoStudent(OpenRecords& open, const std::filesystem::path& credentials)
 {
-    double first = 1e9;
-    double last = -1e9;
-    for (const auto& info : anatomy.physicsNodes) {
-        if (info.segment == geometry::Segment::Sigmoid) {
-            first = std::min(first, info.arcLength);
-            last = std::max(last, info.arcLength);
+    std::ifstream in(credentials);
+    std::string password;
+    if (in && std::getline(in, password) && !password.empty()) {
+        try {
+            return open.records->authenticate(kDemoStudent, password);
+        } catch (const db::AuthenticationFailed&) {
+            throw UsageError(credentials.string() + " does not hold the password of \"" + kDemoStudent +
+                             "\" any more; an administrator can set it with colonosim user passwd " +
+                             kDemoStudent + " --as admin, then write it into that file");
         }
     }
-    const double middle = 0.5 * (first + last);
-    int best = 0;
-    for (int i = 0; i < static_cast<int>(anatomy.physicsNodes.size()); ++i) {
-        if (std::abs(anatomy.physicsNodes[static_cast<size_t>(i)].arcLength - middle) <
-            std::abs(anatomy.physicsNodes[static_cast<size_t>(best)].arcLength - middle)) {
-            best = i;
+    std::optional<db::Actor> admin = open.firstAdministrator;
+    if (!admin) {
+        const char* adminPassword = std::getenv("COLONOSIM_ADMIN_PASSWORD");
+        if (!adminPassword || !*adminPassword) {
+            throw UsageError(std::string("the demonstration's trainee \"") + kDemoStudent +
+                             "\" has no password file (" + credentials.string() +
+                             "): set COLONOSIM_ADMIN_PASSWORD to the password of \"admin\" so the "
+                             "demonstration can create it, or give --db a new file");
+        }
+        try {
+            admin = open.records->authenticate("admin", adminPassword);
+        } catch (const db::AuthenticationFailed& error) {
+            throw UsageError(std::string(error.what()) + " (COLONOSIM_ADMIN_PASSWORD)");
         }
     }
-    return best;
+    password = db::randomPassword();
+    bool exists = false;
+    for (const db::UserRow& u : open.records->listUsers(*admin)) {
+        exists = exists || u.name == kDemoStudent;
+    }
+    if (exists) {
+        open.records->setPassword(*admin, kDemoStudent, password);
+    } else {
+        open.records->addUser(*admin, kDemoStudent, db::Role::Student, password);
+    }
+    {
+        std::ofstream out(credentials, std::ios::trunc);
+        out << password << '\n';
+        if (!out) {
+            throw UsageError(credentials.string() + " cannot be written: " + std::strerror(errno));
+        }
+    }
+    std::filesystem::permissions(credentials,
+                                 std::filesystem::perms::owner_read | std::filesystem::perms::owner_write);
+    return open.records->authenticate(kDemoStudent, password);
 }
+
 }  // namespace
 
 int runDemo(std::span<char* const> args)
 {
-    const CommandLine line(args, {"--json", "--help"}, {"--duration", "--integrator"});
+    for (size_t k = 0; k < args.size(); ++k) {
+        if (std::strcmp(args[k], "--tissue") == 0) {
+            std::vector<char*> rest(args.begin(), args.end());
+            rest.erase(rest.begin() + static_cast<std::ptrdiff_t>(k));
+            return runTissueDemo(std::span<char* const>(rest.data(), rest.size()));
+        }
+    }
+    const CommandLine line(args, {"--json", "--help"}, {"--db", "--out", "--max-time", "--seed"});
     if (line.has("--help")) {
         std::cout
-            << "usage: colonosim demo [--duration S] [--integrator NAME] [--json]\n"
-               "Headless demonstration: procedural colon, wall calibration, settling under gravity and\n"
-               "insufflation, a 2 N push on the sigmoid wall, visual-mesh mapping.\n"
-               "  --duration S      simulated seconds, 0.05-60 (default 0.5)\n"
-               "  --integrator NAME explicit_euler, symplectic_euler (default), rk4, backward_euler\n";
+            << "usage: colonosim demo [--db FILE] [--out DIR] [--max-time S] [--seed N] [--json]\n"
+               "       colonosim demo --tissue [--duration S] [--integrator NAME] [--json]\n"
+               "The whole pipeline, headless: generate a case, run the expert operator on it, score the\n"
+               "session into the records as \"demo-student\", write the trainee's PDF report.\n"
+               "  --db FILE      the records database (default: records.sqlite in the user's data "
+               "directory)\n"
+               "  --out DIR      where the case and the report go (default: demo/ beside the database)\n"
+               "  --max-time S   simulated seconds of the procedure, 1-900 (default 10)\n"
+               "  --seed N       the case generator's seed, 0-1000000 (default 1)\n"
+               "  --tissue       the tissue demonstration instead (its own options, see demo --tissue "
+               "--help)\n";
         return 0;
     }
-    const double duration = line.number("--duration", 0.5, 0.05, 60.0, "s");
-    physics::SteppingPolicy policy;
-    policy.integrator = physics::parseIntegrator(line.value("--integrator").value_or("symplectic_euler"));
+    const double maxTime = line.number("--max-time", 10.0, 1.0, 900.0, "s");
+    const auto seed = static_cast<std::uint64_t>(std::llround(line.number("--seed", 1.0, 0.0, 1e6, "")));
     const bool json = line.has("--json");
     std::ostream& log = json ? std::cerr : std::cout;
+    ensureQtApplication(true);
 
-    auto start = Clock::now();
-    const geometry::AnatomyParameters anatomyParameters;
-    const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(anatomyParameters);
-    log << "colon: " << anatomy.centreline.length() << " m, " << anatomy.physicsMesh.numVertices()
-        << " physics nodes, " << anatomy.visualMesh.numVertices() << " visual vertices, "
-        << anatomy.organs.size() << " organs (" << seconds(start) << " s)\n";
+    OpenRecords open = openRecords(line, log);
+    const std::filesystem::path database = std::filesystem::absolute(open.database->path());
+    const std::filesystem::path out =
+        line.value("--out") ? std::filesystem::path(*line.value("--out")) : database.parent_path() / "demo";
+    std::filesystem::create_directories(out);
+    const db::Actor student = demoStudent(open, database.string() + ".demo-student");
 
-    const physics::TissueParameters tissue;
-    const physics::EnvironmentParameters environment;
-    physics::TubeResolution tube;
-    tube.nodesPerRing = static_cast<int>(anatomyParameters.physicsNodesPerRing);
-    tube.radius = 0.5 * anatomyParameters.diameter(geometry::Segment::Sigmoid);
-    tube.ringSpacing =
-        anatomyParameters.totalLength() * tube.nodesPerRing / anatomyParameters.physicsTargetNodeCount;
-    const physics::CalibrationReport calibration = physics::calibrateWallStiffness(tube, tissue);
-    log << "wall calibration: axial x" << calibration.factors.axial << ", circumferential x"
-        << calibration.factors.circumferential << " (residual " << calibration.axialStiffnessError << ", "
-        << calibration.hoopStiffnessError << ")\n";
+    // 1. the case
+    const cases::Case theCase = cases::CaseGenerator().generate(seed);
+    const std::string caseXml = cases::writeCase(theCase);
+    const std::filesystem::path caseFile = out / ("case-" + std::to_string(seed) + ".xml");
+    reports::writeFileWhole(caseFile, caseXml);
+    const qint64 caseId = open.records->storeCase(student, caseFile.filename().string(), caseXml);
+    log << "1. case: " << theCase.patient.givenName << " " << theCase.patient.familyName << ", "
+        << theCase.patient.age << " years, difficulty " << theCase.difficulty.level << " of 5, "
+        << theCase.lesions.size() << " lesion(s): " << caseFile.string() << '\n';
 
-    physics::ColonBody colon = physics::buildColonBody(anatomy, tissue, environment, calibration.factors);
-    physics::TissueSimulation simulation(colon.body, policy);
-    physics::ActiveRegion region(colon.neighbours, physics::SleepParameters{});
-    simulation.setActiveRegion(&region);
-    log << "stepping: " << simulation.planNote() << '\n';
-
-    const physics::Positions rest = colon.body.positions();
-    const int pushed = sigmoidNode(anatomy);
-    const Eigen::Vector3d pushCentre =
-        geometry::sampleCentreline(anatomy.centreline,
-                                   anatomy.physicsNodes[static_cast<size_t>(pushed)].arcLength)
-            .point;
-    const int steps = static_cast<int>(std::lround(duration / policy.loopStep));
-    start = Clock::now();
-    for (int s = 0; s < steps; ++s) {
-        colon.body.clearExternalForces();
-        if (s >= steps / 2) {
-            // A colonoscope tip pushing the sigmoid wall outward with 2 N,
-            // spread over the node and its spring neighbours (~2 cm across).
-            const Eigen::Vector3d outward = (rest.col(pushed) - pushCentre).normalized();
-            const auto& patch = colon.neighbours[static_cast<size_t>(pushed)];
-            const double share = 2.0 / static_cast<double>(patch.size() + 1);
-            colon.body.applyExternalForce(pushed, share * outward);
-            for (const int node : patch) {
-                colon.body.applyExternalForce(node, share * outward);
-            }
-        }
-        simulation.advance();
+    // 2. the expert operator
+    const cases::SceneSpec scene = cases::toScene(theCase);
+    const procedure::ProcedureSettings settings = procedureSettingsFor(scene);
+    const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(scene.anatomy);
+    procedure::ProcedureLoop loop(anatomy, settings);
+    const qint64 session = open.records->beginSession(student, caseId, kDemoTask, "scripted:expert");
+    const auto driver = procedure::makeOperator("expert");
+    const auto started = std::chrono::steady_clock::now();
+    const auto steps = static_cast<long>(maxTime / loop.trace().loopStep);
+    for (long s = 0; s < steps && !driver->finished(); ++s) {
+        loop.step(driver->next(loop));
     }
-    const double wall = seconds(start);
-    double maxDisplacement = 0.0;
-    for (Eigen::Index i = 0; i < rest.cols(); ++i) {
-        maxDisplacement = std::max(maxDisplacement, (colon.body.positions().col(i) - rest.col(i)).norm());
-    }
-    const double pushDisplacement = (colon.body.positions().col(pushed) - rest.col(pushed)).norm();
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    log << "2. expert operator: " << loop.time() << " s simulated in " << wall << " s\n";
 
-    start = Clock::now();
-    const geometry::MeshMapping mapping(anatomy.physicsMesh, anatomy.visualMesh.vertices);
-    const double mappingBuild = seconds(start);
-    Eigen::Matrix3Xd visual(3, anatomy.visualMesh.numVertices());
-    start = Clock::now();
-    mapping.apply(colon.body.positions(), visual);
-    const double mappingApply = seconds(start);
+    // 3. scored into the records
+    scoring::ScoringContext context;
+    context.colonLength = settings.recorder.colonLength;
+    context.lesionsPresent = static_cast<int>(theCase.lesions.size());
+    const db::SessionResult result =
+        completeStoredSession(*open.records, student, session, kDemoTask, loop, context);
+    log << "3. session " << session << " of " << kDemoStudent << " stored with " << result.metrics.size()
+        << " metrics, task " << kDemoTask << ", "
+        << (result.scores.contains("composite")
+                ? "composite score " + std::to_string(result.scores.at("composite"))
+                : std::string("no composite score yet: no benchmark set is stored for the task (an "
+                              "administrator derives one from expert sessions: colonosim benchmarks derive)"))
+        << "\n";
 
-    log << "simulated " << duration << " s in " << steps << " loop steps: " << wall << " s wall ("
-        << duration / wall << "x real time); " << region.numAwake() << " of " << colon.body.numNodes()
-        << " nodes awake at the end\n"
-        << "pushed node moved " << pushDisplacement * 1e3 << " mm; largest displacement "
-        << maxDisplacement * 1e3 << " mm; mesentery strain up to "
-        << colon.mesentery->maxStrain(colon.body.positions()) << "\n"
-        << "rejected steps: " << simulation.rejectedSteps() << '\n'
-        << "visual mapping: built in " << mappingBuild << " s, applied in " << mappingApply * 1e3 << " ms\n";
-    for (const auto& rejection : simulation.rejections()) {
-        log << "  " << rejection.message << '\n';
-    }
+    // 4. the report
+    const std::filesystem::path report = out / (std::string(kDemoStudent) + "-report.pdf");
+    reports::writeFileWhole(report,
+                            reports::progressPdf(*open.database, *open.records, student, kDemoStudent));
+    log << "4. report: " << report.string() << "\n\nrecords: " << database.string()
+        << "\nreport:  " << report.string() << '\n';
     if (json) {
-        nlohmann::json out;
-        out["colon_length_m"] = anatomy.centreline.length();
-        out["physics_nodes"] = anatomy.physicsMesh.numVertices();
-        out["visual_vertices"] = anatomy.visualMesh.numVertices();
-        out["stepping"] = simulation.planNote();
-        out["simulated_s"] = duration;
-        out["wall_s"] = wall;
-        out["push_displacement_m"] = pushDisplacement;
-        out["max_displacement_m"] = maxDisplacement;
-        out["rejected_steps"] = simulation.rejectedSteps();
-        out["awake_nodes"] = region.numAwake();
-        out["mapping_apply_ms"] = mappingApply * 1e3;
-        std::cout << out.dump(2) << '\n';
+        nlohmann::json summary = {{"database", database.string()}, {"case", caseFile.string()},
+                                  {"report", report.string()},     {"session", session},
+                                  {"simulated_s", loop.time()},    {"wall_s", wall},
+                                  {"scores", result.scores}};
+        std::cout << summary.dump(2) << '\n';
     }
-    return simulation.rejectedSteps() == 0 ? 0 : 1;
+    return 0;
 }
 
 }  // namespace colonosim::cli

@@ -10,6 +10,7 @@
 #include "simcore/physics/ActiveRegion.h"
 #include "simcore/physics/TissueParameters.h"
 #include "simcore/physics/TissueSimulation.h"
+#include "simcore/procedure/BleedingMarks.h"
 #include "simcore/procedure/DeviceInput.h"
 #include "simcore/procedure/Recorder.h"
 #include "simcore/render/RenderParameters.h"
@@ -68,6 +69,8 @@ int runParams(std::span<char* const> args)
         &procedure::RecordingResolution::forceSpec,         &procedure::RecordingResolution::torqueSpec,
         &procedure::RecordingResolution::strainSpec,        &procedure::RecordingResolution::discomfortSpec};
     std::cout << "## Recording\n\n" << params::markdownTable("recording", recording) << '\n';
+    std::cout << "## Contact bleeding marks\n\n"
+              << params::markdownTable("bleeding", specsOf(procedure::BleedingParameters::fields())) << '\n';
     std::cout << "## Plain input devices (keyboard, gamepad)\n\n"
               << params::markdownTable("manual", specsOf(devices::ManualRates::fields())) << '\n';
     std::cout << "## Simulated haptic device\n\n"

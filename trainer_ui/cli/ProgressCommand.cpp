@@ -5,12 +5,9 @@
 /// certification rules met and not met. A student sees only themselves, an
 /// instructor the students of their cohorts, an administrator everyone.
 
-#include "curricula/Certification.h"
-#include "curricula/Curriculum.h"
-#include "curricula/Progression.h"
-#include "scoring/LearningCurve.h"
 #include "trainer_ui/cli/Commands.h"
 #include "trainer_ui/cli/RecordsAccess.h"
+#include "trainer_ui/reports/ProgressReport.h"
 
 #include <nlohmann/json.hpp>
 
@@ -18,59 +15,6 @@
 #include <iostream>
 
 namespace colonosim::cli {
-
-nlohmann::json progressReport(db::Records& records, const db::Actor& actor, const std::string& user)
-{
-    const auto curriculum =
-        curricula::parseCurriculum(curricula::coreCurriculumXml(), "colonoscopy-core.xml");
-    const auto rules = curricula::parseRuleSet(curricula::coreRuleSetXml(), "certification-rules.xml");
-    const std::vector<db::SessionRow> sessions = records.sessions(actor, user);
-    std::vector<curricula::Attempt> attempts;
-    std::vector<scoring::MetricValues> metrics;
-    std::vector<bool> failures;
-    for (const db::SessionRow& s : sessions) {
-        const auto met = s.scores.find("benchmark_met");
-        attempts.push_back({s.task, met != s.scores.end() && met->second > 0.5});
-        metrics.push_back(s.metrics);
-        const auto cecum = s.metrics.find("cecal_intubation");
-        failures.push_back(cecum == s.metrics.end() || cecum->second < 0.5);
-    }
-    nlohmann::json out;
-    out["user"] = user;
-    out["completed_sessions"] = sessions.size();
-    const auto states = curricula::progression(*curriculum.value, attempts);
-    for (const curricula::Task& t : curriculum.value->tasks) {
-        nlohmann::json task = {{"id", t.id},
-                               {"module", t.module},
-                               {"title", t.title},
-                               {"state", curricula::stateName(states.at(t.id))}};
-        if (!t.available) {
-            task["why"] = t.unavailableReason;
-        }
-        out["tasks"].push_back(task);
-    }
-    const scoring::CusumParameters parameters;
-    const scoring::LearningCurve curve = scoring::learningCurve(failures, parameters);
-    out["learning_curve"] = {{"outcome", "failure = cecum not reached"},
-                             {"acceptable_failure_rate", parameters.acceptable},
-                             {"unacceptable_failure_rate", parameters.unacceptable},
-                             {"cusum", curve.cusum},
-                             {"cusum_h1", parameters.upperLimit()},
-                             {"lc_cusum", curve.lcCusum},
-                             {"lc_cusum_h", parameters.lcLimit()},
-                             {"competent_at", curve.competentAt},
-                             {"unacceptable_at", curve.unacceptableAt}};
-    for (const curricula::RuleStatus& r : curricula::evaluate(*rules.value, metrics)) {
-        out["certification"].push_back(
-            {{"rule", r.rule->id},
-             {"description", r.rule->description},
-             {"met", r.met},
-             {"observed", std::isnan(r.observed) ? nlohmann::json() : nlohmann::json(r.observed)},
-             {"sessions", r.sessions},
-             {"source", r.rule->source}});
-    }
-    return out;
-}
 
 int runProgress(std::span<char* const> args)
 {
@@ -93,7 +37,7 @@ int runProgress(std::span<char* const> args)
     const db::Actor actor = authenticate(*open.records, line, line.value("--as").value_or(*user));
     nlohmann::json report;
     try {
-        report = progressReport(*open.records, actor, *user);
+        report = reports::progressReport(*open.database, *open.records, actor, *user);
     } catch (const db::AccessDenied& error) {
         throw UsageError(std::string("refused: ") + error.what());
     } catch (const db::DatabaseError& error) {
@@ -121,11 +65,12 @@ int runProgress(std::span<char* const> args)
                           : std::string(", competence not yet signalled"))
                   << '\n';
     }
-    std::cout << "\ncertification:\n";
+    std::cout << "\ncertification (rule set " << reports::ruleSetLabel(report) << "):\n";
     for (const auto& r : report["certification"]) {
         std::cout << "  " << (r["met"].get<bool>() ? "met    " : "not met") << "  "
                   << r["description"].get<std::string>() << " (observed "
-                  << observedText(r["observed"].is_null() ? std::nan("") : r["observed"].get<double>())
+                  << reports::observedText(r["observed"].is_null() ? std::nan("")
+                                                                   : r["observed"].get<double>())
                   << " over " << r["sessions"] << " session(s))\n";
     }
     return 0;

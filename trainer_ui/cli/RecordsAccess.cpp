@@ -10,8 +10,6 @@
 #include <QGuiApplication>
 #include <QStandardPaths>
 
-#include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
@@ -65,8 +63,7 @@ OpenRecords openRecords(const CommandLine& line, std::ostream& notices)
     if (out.records->empty()) {
         const char* chosen = std::getenv("COLONOSIM_ADMIN_PASSWORD");
         const std::string password = chosen && *chosen ? chosen : db::randomPassword();
-        const db::Actor admin = out.records->bootstrapAdministrator("admin", password);
-        out.records->storeCurriculum(admin, "colonoscopy-core", curricula::coreCurriculumXml());
+        out.firstAdministrator = seedFirstStart(*out.records, "admin", password);
         notices << "records: first start of " << path.string() << ": administrator \"admin\" created";
         if (chosen && *chosen) {
             notices << " with the password from COLONOSIM_ADMIN_PASSWORD\n";
@@ -77,6 +74,13 @@ OpenRecords openRecords(const CommandLine& line, std::ostream& notices)
         }
     }
     return out;
+}
+
+db::Actor seedFirstStart(db::Records& records, const std::string& administrator, const std::string& password)
+{
+    const db::Actor admin = records.bootstrapAdministrator(administrator, password);
+    records.storeCurriculum(admin, kCoreCurriculum, curricula::coreCurriculumXml());
+    return admin;
 }
 
 std::string readSecret(const CommandLine& line, const std::string& fileOption, const char* envVar,
@@ -137,16 +141,6 @@ void scoreInto(db::Records& records, const db::Actor& actor, const std::string& 
     for (const auto& [id, state] : curricula::progression(*curriculum.value, attempts)) {
         result.progress[id] = curricula::stateName(state);
     }
-}
-
-std::string observedText(double observed)
-{
-    if (std::isnan(observed)) {
-        return "none yet";
-    }
-    char text[32];
-    std::snprintf(text, sizeof text, "%.3g", observed);
-    return text;
 }
 
 }  // namespace colonosim::cli

@@ -17,6 +17,7 @@
 
 #include <iosfwd>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace colonosim::cli {
@@ -28,16 +29,22 @@ inline const std::vector<std::string> kRecordsOptions = {"--db", "--as", "--pass
 /// platform when `gui`, for drawing reports).
 void ensureQtApplication(bool gui = false);
 
-/// A certification rule's observed value as a person reads it: "none yet"
-/// when nothing has been observed, else the number to 3 significant digits.
-std::string observedText(double observed);
-
 [[nodiscard]] std::filesystem::path defaultDatabasePath();
 
 struct OpenRecords {
     std::unique_ptr<db::Database> database;
     std::unique_ptr<db::Records> records;
+    /// The administrator created by this open (first start only).
+    std::optional<db::Actor> firstAdministrator;
 };
+
+/// The name under which the core curriculum is stored.
+inline constexpr const char* kCoreCurriculum = "colonoscopy-core";
+
+/// First start of a database with no user: creates the first administrator
+/// `administrator` with `password` and stores the core curriculum. Both the
+/// command line and the trainer's first-start dialog seed through here.
+db::Actor seedFirstStart(db::Records& records, const std::string& administrator, const std::string& password);
 
 /// Opens `--db` or the default; on first start seeds it, writing the one-time
 /// notice to `notices`.

@@ -21,6 +21,7 @@
 #include "trainer_ui/cli/CaseArgument.h"
 #include "trainer_ui/cli/CommandLine.h"
 #include "trainer_ui/cli/Commands.h"
+#include "trainer_ui/cli/SceneFindings.h"
 
 #include <QFont>
 #include <QGuiApplication>
@@ -74,42 +75,6 @@ std::pair<double, double> parseDials(const std::optional<std::string>& text)
         throw UsageError("--dials = " + *text + " is not UP,LEFT in degrees, each in [-180, 180] deg");
     }
     return {u * std::numbers::pi / 180.0, l * std::numbers::pi / 180.0};
-}
-
-render::WallFindings findingsOf(const cases::SceneSpec& scene)
-{
-    render::WallFindings findings;
-    for (const cases::SceneLesion& lesion : scene.lesions) {
-        render::Lesion out;
-        out.place = {lesion.place.arcLength, lesion.place.angle};
-        out.diameter = lesion.diameter;
-        switch (lesion.paris) {
-        case cases::Paris::Ip: out.shape = render::LesionShape::Pedunculated; break;
-        case cases::Paris::IIa:
-        case cases::Paris::IIb:
-        case cases::Paris::LstGranular:
-        case cases::Paris::LstNonGranular: out.shape = render::LesionShape::Flat; break;
-        case cases::Paris::IIc: out.shape = render::LesionShape::Depressed; break;
-        default: out.shape = render::LesionShape::Sessile;
-        }
-        switch (lesion.histology) {
-        case cases::Histology::Hyperplastic:
-        case cases::Histology::SessileSerrated:
-        case cases::Histology::TraditionalSerrated:
-        case cases::Histology::Lipoma: out.tissue = render::LesionTissue::Serrated; break;
-        case cases::Histology::Adenocarcinoma: out.tissue = render::LesionTissue::Cancer; break;
-        default: out.tissue = render::LesionTissue::Adenoma;
-        }
-        findings.lesions.push_back(out);
-    }
-    for (const cases::SceneDiverticulum& pocket : scene.diverticula) {
-        findings.diverticula.push_back({{pocket.place.arcLength, pocket.place.angle}, pocket.diameter});
-    }
-    for (int s = 0; s < geometry::kNumSegments; ++s) {
-        const auto region = cases::bowelRegion(static_cast<geometry::Segment>(s));
-        findings.stoolFraction[static_cast<size_t>(s)] = scene.residualStool[static_cast<size_t>(region)];
-    }
-    return findings;
 }
 
 QImage toQImage(const render::RgbaImage& image)
@@ -203,8 +168,7 @@ int runRender(std::span<char* const> args)
         const cases::Case theCase = readCaseArgument(*caseFile);
         const cases::SceneSpec scene = cases::toScene(theCase);
         anatomyParameters = scene.anatomy;
-        settings.tissue = scene.tissue;
-        settings.environment = scene.environment;
+        settings = procedureSettingsFor(scene);
         findings = findingsOf(scene);
     }
 
@@ -227,6 +191,7 @@ int runRender(std::span<char* const> args)
     const auto drawView = [&](double lensSoiling) {
         scene.mapping.apply(loop.colon().body.positions(), scene.visual);
         view.setWallPositions(scene.visual);
+        view.setBleedingMarks(loop.bleedingMarks());
         view.render(poseOf(loop.outputs().tip), {lensSoiling, 0.0}, size.width, size.height);
         return toQImage(context.readBack());
     };

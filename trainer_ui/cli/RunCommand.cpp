@@ -10,9 +10,6 @@
 /// metrics, scores and the user's progress (see RecordsAccess.h for authentication).
 
 #include "case_generator/SceneSpec.h"
-#include "curricula/Curriculum.h"
-#include "db/RecordingCodec.h"
-#include "db/StoredTrace.h"
 #include "scoring/SessionMetrics.h"
 #include "simcore/devices/Gamepad.h"
 #include "simcore/devices/HdcOperator.h"
@@ -22,6 +19,7 @@
 #include "trainer_ui/cli/CommandLine.h"
 #include "trainer_ui/cli/Commands.h"
 #include "trainer_ui/cli/RecordsAccess.h"
+#include "trainer_ui/cli/SessionStore.h"
 
 #include <nlohmann/json.hpp>
 
@@ -68,32 +66,6 @@ nlohmann::json summarise(const procedure::Recording& recording, double duration)
     return out;
 }
 
-QByteArray bytes(const std::vector<char>& v)
-{
-    return QByteArray(v.data(), static_cast<qsizetype>(v.size()));
-}
-
-/// The curriculum task a stored session belongs to; UsageError listing the runnable ones.
-std::string checkTask(const std::string& id)
-{
-    const auto curriculum =
-        curricula::parseCurriculum(curricula::coreCurriculumXml(), "colonoscopy-core.xml");
-    const curricula::Task* task = curriculum.value->find(id);
-    std::string runnable;
-    for (const curricula::Task& t : curriculum.value->tasks) {
-        if (t.available) {
-            runnable += (runnable.empty() ? "" : ", ") + t.id;
-        }
-    }
-    if (!task) {
-        throw UsageError("--task = " + id + " is not a task of colonoscopy-core (allowed: " + runnable + ")");
-    }
-    if (!task->available) {
-        throw UsageError("--task = " + id + " cannot be run yet: " + task->unavailableReason +
-                         " (allowed: " + runnable + ")");
-    }
-    return id;
-}
 }  // namespace
 
 int runProcedure(std::span<char* const> args)
@@ -155,8 +127,8 @@ int runProcedure(std::span<char* const> args)
     }
     const std::string task = checkTask(line.value("--task").value_or("navigation-straight"));
 
-    // A generated case sets the anatomy, the wall and the environment; its
-    // lesions, diverticula and adhesions are not yet part of the loop's physics.
+    // A generated case sets the anatomy, the wall, the environment and the
+    // lesions' places (procedureSettingsFor).
     procedure::ProcedureSettings settings;
     geometry::AnatomyParameters anatomyParameters;
     int lesionsPresent = 0;
@@ -165,8 +137,7 @@ int runProcedure(std::span<char* const> args)
         lesionsPresent = static_cast<int>(theCase.lesions.size());
         const cases::SceneSpec scene = cases::toScene(theCase);
         anatomyParameters = scene.anatomy;
-        settings.tissue = scene.tissue;
-        settings.environment = scene.environment;
+        settings = procedureSettingsFor(scene);
     }
     const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(anatomyParameters);
     procedure::ProcedureLoop loop(anatomy, settings);
@@ -216,15 +187,8 @@ int runProcedure(std::span<char* const> args)
         scoring::ScoringContext context;
         context.colonLength = settings.recorder.colonLength;
         context.lesionsPresent = lesionsPresent;
-        db::SessionResult result;
-        result.trace = bytes(db::encodeStoredTrace(loop.trace()));
-        result.recording = bytes(db::encodeRecording(loop.recording()));
-        result.duration = loop.time();
-        for (const auto& e : loop.recording().events) {
-            result.events.push_back({e.time, std::string(procedure::eventName(e.kind)), e.detail});
-        }
-        scoreInto(*records.records, actor, task, scoring::computeMetrics(loop.recording(), context), result);
-        records.records->completeSession(actor, session, result);
+        const db::SessionResult result =
+            completeStoredSession(*records.records, actor, session, task, loop, context);
         summary["session"] = session;
         summary["task"] = task;
         summary["scores"] = result.scores;

@@ -1,4 +1,4 @@
-#include "trainer_ui/cli/CertificateSignature.h"
+#include "trainer_ui/reports/CertificateSignature.h"
 
 #include <sodium.h>
 
@@ -9,7 +9,7 @@
 #include <sys/stat.h>
 #include <vector>
 
-namespace colonosim::cli {
+namespace colonosim::reports {
 
 namespace {
 void initialise()
@@ -133,4 +133,4 @@ bool verifySignature(const std::string& publicKeyHex, const std::string& signatu
                                        pk->data()) == 0;
 }
 
-}  // namespace colonosim::cli
+}  // namespace colonosim::reports

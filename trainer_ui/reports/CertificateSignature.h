@@ -14,7 +14,7 @@
 #include <optional>
 #include <string>
 
-namespace colonosim::cli {
+namespace colonosim::reports {
 
 struct SignedTrailer {
     std::string user, publicKey, signature;  ///< hex
@@ -39,4 +39,4 @@ struct SigningKey {
 [[nodiscard]] bool verifySignature(const std::string& publicKeyHex, const std::string& signatureHex,
                                    const std::string& message);
 
-}  // namespace colonosim::cli
+}  // namespace colonosim::reports

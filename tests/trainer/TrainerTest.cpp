@@ -1,0 +1,359 @@
+// The trainer driven as a person drives it, under Xvfb: the first start
+// (choosing the administrator's password), the login (a wrong password is
+// answered with a sentence), and a student taking the first task of the
+// curriculum with the autopilot and with the keyboard, seeing the results,
+// and replaying the session (seeking lands exactly on the recording). A
+// screenshot of every screen goes to the screenshots folder of the build.
+#include "db/Database.h"
+#include "db/Records.h"
+#include "scoring/Benchmarks.h"
+#include "tests/db/TempDir.h"
+#include "trainer_ui/app/CurriculumMap.h"
+#include "trainer_ui/app/EndoscopeViewWidget.h"
+#include "trainer_ui/app/FirstStartDialog.h"
+#include "trainer_ui/app/MainWindow.h"
+#include "trainer_ui/app/ProcedureScreen.h"
+#include "trainer_ui/app/ReplayScreen.h"
+#include "trainer_ui/app/ResultsScreen.h"
+#include "trainer_ui/app/SimulationRunner.h"
+#include "trainer_ui/app/TaskBrief.h"
+#include "trainer_ui/cli/RecordsAccess.h"
+
+#include <QComboBox>
+#include <QDir>
+#include <QDoubleSpinBox>
+#include <QElapsedTimer>
+#include <QLabel>
+#include <QLineEdit>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QTableWidget>
+#include <QTest>
+#include <QTreeWidget>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+
+namespace {
+
+using namespace colonosim;
+
+constexpr int kLongWait =
+    180000;  ///< ms: a generous bound for work on a loaded machine (never a timing check)
+
+/// Waits, processing events, until `condition` holds (at most kLongWait),
+/// then asserts it. QtTest's QTRY_* macros report a failure to QtTest and
+/// return, which GoogleTest counts as a pass; this fails the test.
+#define ASSERT_SOON(condition)                                                                               \
+    do {                                                                                                     \
+        QElapsedTimer waited;                                                                                \
+        waited.start();                                                                                      \
+        while (!(condition) && waited.elapsed() < kLongWait) {                                               \
+            QTest::qWait(10);                                                                                \
+        }                                                                                                    \
+        ASSERT_TRUE(condition) << "still false: " #condition;                                                \
+    } while (false)
+
+void screenshot(QWidget& widget, const QString& name)
+{
+    QDir().mkpath(QStringLiteral(COLONOSIM_SCREENSHOT_DIR));
+    const QString path = QStringLiteral(COLONOSIM_SCREENSHOT_DIR "/%1.png").arg(name);
+    EXPECT_TRUE(widget.grab().save(path)) << path.toStdString();
+}
+
+template <class T>
+T* child(QWidget& parent, const char* name)
+{
+    T* found = parent.findChild<T*>(QString::fromLatin1(name));
+    EXPECT_NE(found, nullptr) << name;
+    return found;
+}
+
+void click(QWidget& parent, const char* button)
+{
+    auto* found = child<QPushButton>(parent, button);
+    ASSERT_NE(found, nullptr);
+    ASSERT_TRUE(found->isEnabled()) << button;
+    QTest::mouseClick(found, Qt::LeftButton);
+}
+
+void logIn(app::MainWindow& window, const QString& name, const QString& password)
+{
+    auto* nameField = child<QLineEdit>(window, "loginName");
+    auto* passwordField = child<QLineEdit>(window, "loginPassword");
+    nameField->clear();
+    QTest::keyClicks(nameField, name);
+    QTest::keyClicks(passwordField, password);
+    click(window, "loginButton");
+}
+
+QString screenName(const app::MainWindow& window)
+{
+    return window.currentScreen() != nullptr ? window.currentScreen()->objectName() : QString();
+}
+
+TEST(Trainer, FirstStartChoosesTheAdministratorsPasswordAndLogsIn)
+{
+    test::TempDir dir;
+    db::Database database(dir / "records.sqlite");
+    db::Records records(database);
+    ASSERT_TRUE(records.empty());
+
+    app::FirstStartDialog dialog(records, dir / "records.sqlite");
+    dialog.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&dialog));
+    auto* password = child<QLineEdit>(dialog, "newPassword");
+    auto* repeat = child<QLineEdit>(dialog, "repeatPassword");
+    QTest::keyClicks(password, "short");
+    QTest::keyClicks(repeat, "short");
+    click(dialog, "createAdministrator");
+    EXPECT_TRUE(dialog.message().contains("at least 8")) << dialog.message().toStdString();
+    EXPECT_TRUE(records.empty());
+
+    password->clear();
+    repeat->clear();
+    QTest::keyClicks(password, "kestrel-harbour-41");
+    QTest::keyClicks(repeat, "kestrel-harbour-14");
+    click(dialog, "createAdministrator");
+    EXPECT_TRUE(dialog.message().contains("differ")) << dialog.message().toStdString();
+    EXPECT_TRUE(records.empty());
+    screenshot(dialog, "first-start");
+
+    QTest::keyClicks(repeat, "kestrel-harbour-41");
+    click(dialog, "createAdministrator");
+    EXPECT_EQ(dialog.result(), QDialog::Accepted);
+    ASSERT_FALSE(records.empty());
+    const db::Actor admin = records.authenticate("admin", "kestrel-harbour-41");
+    EXPECT_EQ(admin.role, db::Role::Administrator);
+    // Seeded as the command line seeds: the core curriculum is stored.
+    EXPECT_TRUE(records.curriculum(admin, cli::kCoreCurriculum).has_value());
+
+    app::MainWindow window(database, records, dir.path());
+    window.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+    logIn(window, "admin", "not-the-password");
+    auto* message = child<QLabel>(window, "loginMessage");
+    EXPECT_TRUE(message->text().contains("not right")) << message->text().toStdString();
+    EXPECT_EQ(window.context(), nullptr);
+    screenshot(window, "login");
+
+    logIn(window, "admin", "kestrel-harbour-41");
+    ASSERT_NE(window.context(), nullptr);
+    EXPECT_EQ(window.context()->actor.role, db::Role::Administrator);
+    EXPECT_EQ(screenName(window), "adminHome");
+    EXPECT_TRUE(child<QLabel>(window, "whoIsLoggedIn")->text().contains("administrator"));
+    click(window, "logOut");
+    EXPECT_EQ(window.context(), nullptr);
+    EXPECT_EQ(screenName(window), "loginScreen");
+}
+
+/// Records with an administrator, the core curriculum, the student ada and a
+/// benchmark set for the first task, so results show pass and fail.
+struct StudentRecords {
+    test::TempDir dir;
+    db::Database database{dir / "records.sqlite"};
+    db::Records records{database};
+
+    StudentRecords()
+    {
+        const db::Actor admin = cli::seedFirstStart(records, "admin", "admin-password-1");
+        records.addUser(admin, "ada", db::Role::Student, "ada-password-1");
+        scoring::BenchmarkSet set;
+        set.name = "core-navigation";
+        set.metrics["max_handle_force"] = {5.0, 1.0, 5};
+        set.metrics["clear_view"] = {0.9, 0.05, 5};
+        set.metrics["cecal_intubation"] = {1.0, 0.0, 5};
+        set.metrics["discomfort_peak"] = {2.0, 1.0, 5};
+        records.storeBenchmarkSet(admin, set.name, 1, set.toJson());
+    }
+};
+
+app::ProcedureScreen* startProcedure(app::MainWindow& window, app::Driver driver, double timeLimit)
+{
+    click(window, "openBrief");
+    EXPECT_EQ(screenName(window), "taskBrief");
+    QWidget& brief = *window.currentScreen();
+    auto* choice = child<QComboBox>(brief, "driverChoice");
+    const int index = choice->findData(static_cast<int>(driver));
+    EXPECT_GE(index, 0);
+    choice->setCurrentIndex(index);
+    child<QDoubleSpinBox>(brief, "timeLimit")->setValue(timeLimit);
+    click(brief, "startProcedure");
+    return qobject_cast<app::ProcedureScreen*>(window.currentScreen());
+}
+
+TEST(Trainer, AStudentTakesTheFirstTaskSeesTheResultsAndReplaysIt)
+{
+    StudentRecords fixture;
+    app::MainWindow window(fixture.database, fixture.records, fixture.dir.path());
+    window.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+    logIn(window, "ada", "ada-password-1");
+    ASSERT_EQ(screenName(window), "studentHome");
+
+    // The curriculum map: the first task is open and marked next, the rest locked.
+    auto* map = qobject_cast<app::CurriculumMap*>(window.currentScreen());
+    ASSERT_NE(map, nullptr);
+    EXPECT_EQ(map->nextTask().value_or(""), "navigation-straight");
+    EXPECT_EQ(map->stateOf("navigation-flexures"), "locked");
+    auto* tree = child<QTreeWidget>(window, "curriculumMap");
+    ASSERT_NE(tree->currentItem(), nullptr);
+    EXPECT_TRUE(tree->currentItem()->text(0).contains("Navigate an easy colon"));
+    screenshot(window, "student-home");
+
+    // The brief: a generated patient with indication, preparation and medication.
+    click(window, "openBrief");
+    ASSERT_EQ(screenName(window), "taskBrief");
+    const QString history = child<QLabel>(window, "caseHistory")->text();
+    for (const char* part : {"Indication", "Preparation", "Medication", "seed"}) {
+        EXPECT_TRUE(history.contains(part)) << part << " missing from " << history.toStdString();
+    }
+    screenshot(window, "task-brief");
+    click(window, "backToCurriculum");
+    ASSERT_EQ(screenName(window), "studentHome");
+
+    // The autopilot drives a short procedure through the procedure screen.
+    constexpr double kRunLength = 4.0;  // s simulated
+    app::ProcedureScreen* procedure = startProcedure(window, app::Driver::Autopilot, kRunLength);
+    ASSERT_NE(procedure, nullptr);
+    const qint64 session = procedure->session();
+    auto* view = child<app::EndoscopeViewWidget>(window, "endoscopeView");
+    {
+        // The first frame; on a timeout, say what the screen shows instead.
+        QElapsedTimer waited;
+        waited.start();
+        while (view->framesDrawn() == 0 && waited.elapsed() < kLongWait) {
+            QTest::qWait(10);
+        }
+        if (view->framesDrawn() == 0) {
+            screenshot(window, "procedure-without-a-frame");
+        }
+        ASSERT_GT(view->framesDrawn(), 0)
+            << "status: " << child<QLabel>(window, "procedureStatus")->text().toStdString()
+            << "; view: " << view->failure().toStdString();
+    }
+    EXPECT_TRUE(view->failure().isEmpty()) << view->failure().toStdString();
+    // The figures (printed, never asserted): frames drawn and loop steps per wall-clock second
+    // from the first frame until 3.5 s simulated.
+    QElapsedTimer wall;
+    wall.start();
+    const long frames0 = procedure->framesDrawn();
+    const double time0 = procedure->shownTime();
+    ASSERT_SOON(procedure->shownTime() >= 3.5);
+    const double seconds = static_cast<double>(wall.elapsed()) / 1000.0;
+    std::cout << "procedure screen over " << seconds << " s: graphics "
+              << static_cast<double>(procedure->framesDrawn() - frames0) / seconds << " frames/s, physics "
+              << 1000.0 * (procedure->shownTime() - time0) / seconds
+              << " steps/s (HUD: " << procedure->graphicsRate() << " frames/s, " << procedure->physicsRate()
+              << " steps/s)\n";
+    EXPECT_GT(procedure->shownInsertion(), 0.03);
+    screenshot(window, "procedure");
+    ASSERT_SOON(screenName(window) == QStringLiteral("resultsScreen"));
+
+    // Results: every metric with its benchmark, stored as completed.
+    auto* table = child<QTableWidget>(window, "metricTable");
+    EXPECT_GE(table->rowCount(), 10);
+    int judged = 0;
+    for (int row = 0; row < table->rowCount(); ++row) {
+        const QString verdict = table->item(row, 3)->text();
+        judged += verdict == "pass" || verdict == "fail" ? 1 : 0;
+    }
+    EXPECT_EQ(judged, 4);  // the four benchmarked metrics
+    EXPECT_FALSE(child<QLabel>(window, "progressionStatus")->text().isEmpty());
+    screenshot(window, "results");
+    const db::Actor ada = fixture.records.authenticate("ada", "ada-password-1");
+    const std::vector<db::SessionRow> stored = fixture.records.sessions(ada, "ada");
+    ASSERT_EQ(stored.size(), 1u);
+    EXPECT_EQ(stored[0].id, session);
+    EXPECT_EQ(stored[0].status, "completed");
+    EXPECT_EQ(stored[0].task, "navigation-straight");
+    EXPECT_EQ(stored[0].device, "scripted:expert");
+    EXPECT_NEAR(stored[0].duration, kRunLength, 1e-6);
+
+    // Replay: play, pause, then seek to a recorded sample; the tip lands exactly where it was recorded.
+    click(window, "replayButton");
+    auto* replay = qobject_cast<app::ReplayScreen*>(window.currentScreen());
+    ASSERT_NE(replay, nullptr);
+    ASSERT_TRUE(replay->failure().isEmpty()) << replay->failure().toStdString();
+    ASSERT_SOON(replay->shown()->state == app::Snapshot::State::Paused);
+    click(window, "replayPlay");
+    ASSERT_SOON(replay->shown()->frame.time > 0.5);
+    click(window, "replayPause");
+    ASSERT_SOON(replay->shown()->state == app::Snapshot::State::Paused);
+    QTest::qWait(200);  // let both views draw the paused frame
+    screenshot(window, "replay");
+
+    const procedure::Recording& recording = replay->recording();
+    ASSERT_GT(recording.samples.size(), 300u);
+    const procedure::RecordedSample& target = recording.samples[250];  // 2.5 s at 100 Hz
+    child<QDoubleSpinBox>(window, "seekTime")->setValue(target.time);
+    click(window, "seekButton");
+    EXPECT_TRUE(replay->seeking());
+    EXPECT_TRUE(child<QProgressBar>(window, "seekProgress")->isVisible());
+    ASSERT_SOON(!replay->seeking());
+    const app::Snapshot* landed = replay->shown();
+    EXPECT_EQ(landed->state, app::Snapshot::State::Paused);
+    EXPECT_EQ(landed->frame.time, target.time);
+    // Deterministic replay: bit-identical to the recording, so exact equality
+    // (the recording holds the frame rounded to the recording resolution).
+    const procedure::ProcedureFrame& f = landed->frame;
+    const procedure::RecordedSample replayed =
+        procedure::quantizeSample({f.time, f.input.insertion, f.tipPosition, f.tipSegment, f.handleForce,
+                                   f.handleTorque, f.maxWallForce, f.mesenteryStrain, f.discomfort, f.loop});
+    EXPECT_EQ(replayed.tip, target.tip);
+    EXPECT_EQ(replayed.handleForce, target.handleForce);
+    EXPECT_EQ(replayed.discomfort, target.discomfort);
+
+    // A cancelled seek leaves the replay where it was.
+    child<QDoubleSpinBox>(window, "seekTime")->setValue(3.9);
+    click(window, "seekButton");
+    ASSERT_TRUE(replay->seeking());
+    click(window, "cancelSeek");
+    EXPECT_FALSE(replay->seeking());
+    EXPECT_FALSE(child<QProgressBar>(window, "seekProgress")->isVisible());
+    QTest::qWait(300);
+    EXPECT_EQ(replay->shown()->frame.time, target.time);
+    click(window, "closeReplay");
+    ASSERT_SOON(screenName(window) == QStringLiteral("resultsScreen"));
+
+    // The keyboard path: holding Up inserts the scope; Esc ends and stores the session.
+    click(window, "backToCurriculum");
+    ASSERT_EQ(screenName(window), "studentHome");
+    procedure = startProcedure(window, app::Driver::Keyboard, 600.0);
+    ASSERT_NE(procedure, nullptr);
+    ASSERT_SOON(child<QLabel>(window, "procedureStatus")->text().contains("running"));
+    EXPECT_EQ(procedure->shownInsertion(), 0.0);
+    QTest::keyPress(procedure, Qt::Key_Up);
+    ASSERT_SOON(procedure->shownInsertion() > 0.01);
+    ASSERT_SOON(!std::isnan(procedure->inputLatency()));
+    std::cout << "input to display (Up key to the first frame drawn with the scope moved): "
+              << procedure->inputLatency() << " ms\n";
+    QTest::keyRelease(procedure, Qt::Key_Up);
+
+    // The mouse path: dragging up on the endoscope view inserts further; a
+    // release stops the feed.
+    QWidget* dragged = child<QWidget>(window, "endoscopeView");
+    ASSERT_NE(dragged, nullptr);
+    const QPoint grab = dragged->rect().center();
+    ASSERT_SOON(procedure->shownInsertion() > 0.0);
+    const double beforeDrag = procedure->shownInsertion();
+    QTest::mousePress(dragged, Qt::LeftButton, {}, grab);
+    QTest::mouseMove(dragged, grab - QPoint(0, 150));  // full deflection: kDragPixels up
+    ASSERT_SOON(procedure->shownInsertion() > beforeDrag + 0.01);
+    QTest::mouseRelease(dragged, Qt::LeftButton, {}, grab - QPoint(0, 150));
+    QTest::qWait(300);  // let the release reach the loop and the display
+    const double released = procedure->shownInsertion();
+    QTest::qWait(500);
+    EXPECT_NEAR(procedure->shownInsertion(), released, 1e-3);  // no feed without a drag
+
+    QTest::keyClick(procedure, Qt::Key_Escape);
+    ASSERT_SOON(screenName(window) == QStringLiteral("resultsScreen"));
+    const std::vector<db::SessionRow> after = fixture.records.sessions(ada, "ada");
+    ASSERT_EQ(after.size(), 2u);
+    EXPECT_EQ(after[1].device, "keyboard");
+    EXPECT_GT(after[1].metrics.at("max_insertion"), 0.02);  // keys, then the mouse
+}
+
+}  // namespace

@@ -1,0 +1,129 @@
+#include "trainer_ui/app/HeadsUpDisplay.h"
+
+#include "simcore/procedure/Discomfort.h"
+
+#include <QFormLayout>
+#include <QLabel>
+#include <QProgressBar>
+
+#include <algorithm>
+#include <cmath>
+
+namespace colonosim::app {
+
+namespace {
+constexpr double kForceScale = 30.0;  ///< N at the gauge's full scale (twice the excessive level)
+
+QString clock(double seconds)
+{
+    const int whole = static_cast<int>(seconds);
+    return QStringLiteral("%1:%2.%3")
+        .arg(whole / 60)
+        .arg(whole % 60, 2, 10, QLatin1Char('0'))
+        .arg(static_cast<int>((seconds - whole) * 10.0));
+}
+
+QProgressBar* gauge(const char* name, int maximum)
+{
+    auto* bar = new QProgressBar;
+    bar->setObjectName(QString::fromLatin1(name));
+    bar->setRange(0, maximum);
+    bar->setTextVisible(false);
+    bar->setMinimumWidth(180);
+    bar->setMaximumWidth(320);
+    return bar;
+}
+
+void colour(QProgressBar* bar, const char* chunk)
+{
+    bar->setStyleSheet(
+        QStringLiteral("QProgressBar { border: 1px solid #777; border-radius: 3px; background: "
+                       "#2b2b2b; height: 14px; } QProgressBar::chunk { background: %1; }")
+            .arg(QString::fromLatin1(chunk)));
+}
+}  // namespace
+
+HeadsUpDisplay::HeadsUpDisplay(double excessiveForce, QWidget* parent)
+    : QWidget(parent), m_excessiveForce(excessiveForce)
+{
+    setObjectName(QStringLiteral("headsUpDisplay"));
+    auto* form = new QFormLayout(this);
+    form->setLabelAlignment(Qt::AlignRight);
+    m_depth = new QLabel(tr("0.0 cm"));
+    m_depth->setObjectName(QStringLiteral("insertionDepth"));
+    m_force = gauge("handleForceGauge", static_cast<int>(kForceScale * 10.0));
+    m_forceText = new QLabel;
+    m_comfort = gauge("comfortMeter", 100);
+    m_comfortText = new QLabel;
+    m_loop = new QLabel;
+    m_loop->setObjectName(QStringLiteral("loopIndicator"));
+    m_timer = new QLabel;
+    m_timer->setObjectName(QStringLiteral("procedureTimer"));
+    m_rates = new QLabel;
+    m_rates->setObjectName(QStringLiteral("rates"));
+    form->addRow(tr("Insertion"), m_depth);
+    form->addRow(tr("Handle force"), m_force);
+    form->addRow(QString(), m_forceText);
+    form->addRow(tr("Comfort"), m_comfort);
+    form->addRow(QString(), m_comfortText);
+    form->addRow(tr("Loop"), m_loop);
+    form->addRow(tr("Time"), m_timer);
+    form->addRow(tr("Rates"), m_rates);
+    showSnapshot(Snapshot{}, 0.0, 0.0);
+}
+
+QString HeadsUpDisplay::comfortWords(int scale)
+{
+    switch (scale) {
+    case 1: return tr("1 comfortable");
+    case 2: return tr("2 minimal discomfort");
+    case 3: return tr("3 mild discomfort");
+    case 4: return tr("4 moderate discomfort");
+    default: return tr("5 severe discomfort");
+    }
+}
+
+QString HeadsUpDisplay::loopWords(procedure::LoopKind kind)
+{
+    switch (kind) {
+    case procedure::LoopKind::None: return tr("no loop");
+    case procedure::LoopKind::N: return tr("sigmoid N-loop");
+    case procedure::LoopKind::Alpha: return tr("alpha loop");
+    case procedure::LoopKind::ReverseAlpha: return tr("reverse alpha loop");
+    case procedure::LoopKind::GammaDeepTransverse: return tr("gamma / deep transverse loop");
+    case procedure::LoopKind::ReverseSplenic: return tr("reverse splenic loop");
+    }
+    return tr("no loop");
+}
+
+void HeadsUpDisplay::showSnapshot(const Snapshot& snapshot, double graphicsRate, double timeLimit)
+{
+    const procedure::ProcedureFrame& frame = snapshot.frame;
+    m_depth->setText(tr("%1 cm").arg(frame.input.insertion * 100.0, 0, 'f', 1));
+    // Below the display's resolution a force reads 0.0, never -0.0.
+    const double force = std::abs(frame.handleForce) < 0.05 ? 0.0 : frame.handleForce;
+    m_force->setValue(static_cast<int>(std::clamp(std::abs(force), 0.0, kForceScale) * 10.0));
+    colour(m_force, std::abs(force) >= m_excessiveForce ? "#e0463c" : "#3fa34d");
+    m_forceText->setText(
+        tr("%1 N (excessive at %2 N)").arg(force, 0, 'f', 1).arg(m_excessiveForce, 0, 'f', 0));
+    m_comfort->setValue(static_cast<int>(std::clamp(frame.discomfort, 0.0, 10.0) * 10.0));
+    const int scale = procedure::comfortScale(frame.discomfort);
+    colour(m_comfort, scale >= 4 ? "#e0463c" : (scale == 3 ? "#e0a43c" : "#3fa34d"));
+    m_comfortText->setText(tr("%1 / 10 — %2").arg(frame.discomfort, 0, 'f', 1).arg(comfortWords(scale)));
+    m_loop->setText(loopWords(frame.loop));
+    m_loop->setStyleSheet(
+        frame.loop == procedure::LoopKind::None
+            ? QStringLiteral("color: #3fa34d; font-weight: bold;")
+            : QStringLiteral("color: white; background: #c0392b; font-weight: bold; padding: 2px;"));
+    m_timer->setText(tr("%1 of %2").arg(clock(frame.time), clock(timeLimit)));
+    m_rates->setText(
+        snapshot.state == Snapshot::State::Running
+            ? tr("graphics %1 frames/s · physics %2 Hz")
+                  .arg(graphicsRate, 0, 'f', 0)
+                  .arg(snapshot.physicsRate, 0, 'f', 0)
+            : tr("graphics %1 frames/s · physics %2")
+                  .arg(graphicsRate, 0, 'f', 0)
+                  .arg(snapshot.state == Snapshot::State::Paused ? tr("paused") : tr("stopped")));
+}
+
+}  // namespace colonosim::app

@@ -1,0 +1,56 @@
+#include "trainer_ui/app/ShapeViewWidget.h"
+
+#include "trainer_ui/app/GlLoader.h"
+
+#include <QPainter>
+
+namespace colonosim::app {
+
+ShapeViewWidget::ShapeViewWidget(std::shared_ptr<const ProcedureScene> scene, QWidget* parent)
+    : QOpenGLWidget(parent), m_scene(std::move(scene))
+{
+    setMinimumSize(320, 160);
+    setMaximumSize(560, 280);
+}
+
+ShapeViewWidget::~ShapeViewWidget()
+{
+    makeCurrent();
+    m_view.reset();
+    doneCurrent();
+}
+
+void ShapeViewWidget::showSnapshot(const Snapshot* snapshot)
+{
+    m_snapshot = snapshot;
+    update();
+}
+
+void ShapeViewWidget::initializeGL()
+{
+    try {
+        m_gl = loadQtGlFunctions();
+        m_view = std::make_unique<render::ShapeView>(*m_gl);
+    } catch (const std::exception& error) {
+        m_failure = tr("The scope-shape view cannot be drawn: %1").arg(QString::fromStdString(error.what()));
+        m_view.reset();
+    }
+}
+
+void ShapeViewWidget::paintGL()
+{
+    if (!m_view || m_snapshot == nullptr || m_snapshot->scopeNodes.empty()) {
+        QPainter painter(this);
+        painter.fillRect(rect(), Qt::black);
+        painter.setPen(QColor(230, 230, 230));
+        painter.drawText(rect(), Qt::AlignCenter | Qt::TextWordWrap,
+                         m_failure.isEmpty() ? tr("Preparing the scope…") : m_failure);
+        return;
+    }
+    const int width = static_cast<int>(this->width() * devicePixelRatioF());
+    const int height = static_cast<int>(this->height() * devicePixelRatioF());
+    m_view->render(m_scene->anatomy.centreline, m_snapshot->scopeNodes, m_snapshot->loopSegment,
+                   m_scene->settings.scope.outerDiameter, width, height, defaultFramebufferObject());
+}
+
+}  // namespace colonosim::app
