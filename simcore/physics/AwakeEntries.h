@@ -39,14 +39,17 @@ public:
     void rebuildPerNode(int numNodes, const std::vector<std::uint8_t>& awake)
     {
         m_awake = awake;
+        rebuildPerNode(numNodes);
+    }
+
+    /// The same after the number of nodes changed, with the last flags.
+    void rebuildPerNode(int numNodes)
+    {
         m_entries.clear();
         for (int i = 0; i < numNodes; ++i) {
             append(i, i);
         }
     }
-
-    /// The same after the number of nodes changed, with the last flags.
-    void rebuildPerNode(int numNodes) { rebuildPerNode(numNodes, std::vector<std::uint8_t>(m_awake)); }
 
     [[nodiscard]] const std::vector<int>& entries() const { return m_entries; }
 

@@ -43,18 +43,24 @@ using namespace colonosim;
 constexpr int kLongWait =
     180000;  ///< ms: a generous bound for work on a loaded machine (never a timing check)
 
-/// Waits, processing events, until `condition` holds (at most kLongWait),
-/// then asserts it. QtTest's QTRY_* macros report a failure to QtTest and
-/// return, which GoogleTest counts as a pass; this fails the test.
+/// Waits, processing events, until `condition()` holds or kLongWait has
+/// passed; returns whether it holds.
+template <class Condition>
+bool waitUntil(Condition condition)
+{
+    QElapsedTimer waited;
+    waited.start();
+    while (!condition() && waited.elapsed() < kLongWait) {
+        QTest::qWait(10);
+    }
+    return condition();
+}
+
+/// Waits until `condition` holds (at most kLongWait), then asserts it.
+/// QtTest's QTRY_* macros report a failure to QtTest and return, which
+/// GoogleTest counts as a pass; this fails the test.
 #define ASSERT_SOON(condition)                                                                               \
-    do {                                                                                                     \
-        QElapsedTimer waited;                                                                                \
-        waited.start();                                                                                      \
-        while (!(condition) && waited.elapsed() < kLongWait) {                                               \
-            QTest::qWait(10);                                                                                \
-        }                                                                                                    \
-        ASSERT_TRUE(condition) << "still false: " #condition;                                                \
-    } while (false)
+    ASSERT_TRUE(waitUntil([&] { return static_cast<bool>(condition); })) << "still false: " #condition
 
 void screenshot(QWidget& widget, const QString& name)
 {
@@ -220,20 +226,13 @@ TEST(Trainer, AStudentTakesTheFirstTaskSeesTheResultsAndReplaysIt)
     ASSERT_NE(procedure, nullptr);
     const qint64 session = procedure->session();
     auto* view = child<app::EndoscopeViewWidget>(window, "endoscopeView");
-    {
-        // The first frame; on a timeout, say what the screen shows instead.
-        QElapsedTimer waited;
-        waited.start();
-        while (view->framesDrawn() == 0 && waited.elapsed() < kLongWait) {
-            QTest::qWait(10);
-        }
-        if (view->framesDrawn() == 0) {
-            screenshot(window, "procedure-without-a-frame");
-        }
-        ASSERT_GT(view->framesDrawn(), 0)
-            << "status: " << child<QLabel>(window, "procedureStatus")->text().toStdString()
-            << "; view: " << view->failure().toStdString();
+    // The first frame; on a timeout, say what the screen shows instead.
+    if (!waitUntil([&] { return view->framesDrawn() > 0; })) {
+        screenshot(window, "procedure-without-a-frame");
     }
+    ASSERT_GT(view->framesDrawn(), 0)
+        << "status: " << child<QLabel>(window, "procedureStatus")->text().toStdString()
+        << "; view: " << view->failure().toStdString();
     EXPECT_TRUE(view->failure().isEmpty()) << view->failure().toStdString();
     // The figures (printed, never asserted): frames drawn and loop steps per wall-clock second
     // from the first frame until 3.5 s simulated.
