@@ -30,12 +30,13 @@
 namespace colonosim::contact {
 
 struct LumenNodeContact {
-    double depth = 0.0;  ///< signed, m: > 0 pressed into the wall
+    double depth = 0.0;                                ///< signed, m: > 0 pressed into the wall
     Eigen::Vector3d normal = Eigen::Vector3d::Zero();  ///< unit, onto the scope, into the lumen
     Eigen::Vector3d slip = Eigen::Vector3d::Zero();    ///< tangential velocity, scope minus wall, m/s
-    double lever = 0.0;  ///< distance from the lumen axis (radial) or the apex (end cap), m: the normal turns by dx / lever
-    std::array<int, 4> wallNodes{};                    ///< the wall point's nodes
-    std::array<double, 4> weights{};                   ///< their weights (sum 1)
+    double lever = 0.0;  ///< distance from the lumen axis (radial) or the apex (end cap), m: the normal turns
+                         ///< by dx / lever
+    std::array<int, 4> wallNodes{};   ///< the wall point's nodes
+    std::array<double, 4> weights{};  ///< their weights (sum 1)
     LumenStation station;
     bool endCap = false;  ///< against the closed cecal end
     // The local wall as a cylinder (axis point, unit axis, wall radius) or,

@@ -33,8 +33,8 @@ LumenTube::LumenTube(const geometry::ColonAnatomy& anatomy)
         ++perRing;
     }
     if (perRing < 3 || (n - 1) % perRing != 0) {
-        refuse("nodes per ring = " + std::to_string(perRing) + " does not divide numVertices - 1 = " +
-               std::to_string(n - 1));
+        refuse("nodes per ring = " + std::to_string(perRing) +
+               " does not divide numVertices - 1 = " + std::to_string(n - 1));
     }
     m_perRing = perRing;
     m_numRings = (n - 1) / perRing;

@@ -11,12 +11,13 @@
 /// c_{i+1} - c_{i-1}, one-sided at the ends) and the 2-D coordinates of its
 /// nodes in its own plane (basis: node 0's radial direction, and a_i x it).
 ///
-/// Station of a point p: the section (i, i + 1) whose ring planes bracket it,
-/// h_i(p) = (p - c_i) . a_i >= 0 > h_{i+1}(p), and u = h_i / (h_i - h_{i+1})
-/// in [0, 1]. It is found by walking ring by ring from a nearby section (the
-/// neighbouring scope node's), never by a global nearest search, so a point
-/// outside the wall stays in its own section and is pushed back the way it
-/// came: the lumen cannot be tunnelled at any speed.
+/// Station of a point p: the nearest point of the polyline of ring centres,
+/// section (i, i + 1) at fraction u in [0, 1], searched only within four
+/// sections of a nearby section (the neighbouring scope node's), never
+/// globally: a point pushed outside the wall stays in its own part of the
+/// colon and is pushed back the way it came, so the lumen cannot be
+/// tunnelled into a neighbouring loop at any speed. (The nearest point and
+/// not the bracketing ring planes, which cross on the inner side of a bend.)
 ///
 /// Wall at a station along a radial direction e (perpendicular to the local
 /// axis): the ray from each ring's centre along e meets the ring polygon at
@@ -38,7 +39,7 @@ namespace colonosim::contact {
 struct LumenStation {
     int ring = 0;
     double u = 0.0;
-    bool beyondEnd = false;  ///< past the dome ring's plane (the closed cecal end)
+    bool beyondEnd = false;    ///< past the dome ring's plane (the closed cecal end)
     bool beforeStart = false;  ///< before the first ring's plane (outside the anus)
 };
 
@@ -68,7 +69,10 @@ public:
     /// Recomputes centres, axes and in-plane coordinates from `wall` (3 x nodes, m).
     void update(const Eigen::Matrix3Xd& wall);
 
-    [[nodiscard]] const Eigen::Vector3d& centre(int ring) const { return m_centre[static_cast<size_t>(ring)]; }
+    [[nodiscard]] const Eigen::Vector3d& centre(int ring) const
+    {
+        return m_centre[static_cast<size_t>(ring)];
+    }
     [[nodiscard]] const Eigen::Vector3d& axis(int ring) const { return m_axis[static_cast<size_t>(ring)]; }
     /// Signed distance of `p` ahead of ring `ring`'s plane, m.
     [[nodiscard]] double height(int ring, const Eigen::Vector3d& p) const

@@ -59,7 +59,8 @@ void DiscreteRod::resizeAtBase(int numNodes)
         const auto dropped = static_cast<size_t>(old - numNodes);
         Eigen::Matrix3d carried = Eigen::Matrix3d::Identity();
         for (size_t k = 0; k <= dropped; ++k) {
-            carried = carried * (hasDial[k] ? dial[k] : Eigen::Matrix3d::Identity()) * rotationFromVector(theta[k]);
+            carried =
+                carried * (hasDial[k] ? dial[k] : Eigen::Matrix3d::Identity()) * rotationFromVector(theta[k]);
         }
         theta[dropped] = vectorFromRotation(carried);
         std::copy(theta.begin() + (old - numNodes), theta.end(), theta.begin());
