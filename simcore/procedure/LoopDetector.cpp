@@ -113,7 +113,8 @@ Eigen::Matrix3Xd LoopDetector::colonPath(double from, double to) const
     return path;
 }
 
-LoopKind LoopDetector::update(const Eigen::Matrix3Xd& shaft, double insertion)
+LoopKind LoopDetector::update(const Eigen::Matrix3Xd& shaft, double insertion,
+                              std::span<const double> nodeArcs)
 {
     const Eigen::Index n = shaft.cols();
     if (n < 2 || m_colon.points.size() < 2) {
@@ -128,7 +129,9 @@ LoopKind LoopDetector::update(const Eigen::Matrix3Xd& shaft, double insertion)
     for (Eigen::Index i = 0; i < n; ++i) {
         const double previous = i == 0 ? 0.0 : s[static_cast<size_t>(i - 1)];
         s[static_cast<size_t>(i)] =
-            locateNear(shaft.col(i), previous - kBackWindow, previous + kForwardWindow);
+            nodeArcs.size() == static_cast<size_t>(n)
+                ? std::clamp(nodeArcs[static_cast<size_t>(i)], 0.0, m_colon.length())
+                : locateNear(shaft.col(i), previous - kBackWindow, previous + kForwardWindow);
         segment[static_cast<size_t>(i)] =
             geometry::sampleCentreline(m_colon, s[static_cast<size_t>(i)]).segment;
     }

@@ -27,6 +27,7 @@
 
 #include <Eigen/Core>
 
+#include <span>
 #include <string_view>
 
 namespace colonosim::procedure {
@@ -52,7 +53,7 @@ public:
 
     /// Analyses the shaft (inserted nodes, anus to tip) at insertion length
     /// `insertion` (m). Call at the recorder rate.
-    LoopKind update(const Eigen::Matrix3Xd& shaft, double insertion);
+    LoopKind update(const Eigen::Matrix3Xd& shaft, double insertion, std::span<const double> nodeArcs = {});
 
     [[nodiscard]] LoopKind current() const { return m_current; }
     [[nodiscard]] const geometry::Centreline& colon() const { return m_colon; }

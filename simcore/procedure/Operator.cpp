@@ -4,12 +4,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 
 namespace colonosim::procedure {
 
 OperatorStyle expertStyle()
 {
-    return {0.03, 0.01, 8.0, true, 2.0, 0.5};
+    return {0.03, 0.01, 8.0, true, 2.0, 0.5, true};
 }
 
 OperatorStyle noviceStyle()
@@ -24,21 +26,35 @@ InputSample ScriptedOperator::next(const ProcedureLoop& loop)
     const double force = loop.outputs().handleForce;
     const double maxInsertion = loop.scope().parameters().workingLength - 0.05;
 
-    // The lumen as the camera sees it: the centreline 4 cm ahead of the tip,
-    // in the tip's frame (x = the viewer's left, y = up, z = forward; see TipPose).
+    // The lumen as the camera sees it: the deformed lumen's centre 4 cm
+    // ahead of the tip, in the tip's frame (x = the viewer's left, y = up,
+    // z = forward; see TipPose).
     const geometry::Centreline& colon = loop.loops().colon();
-    const double ahead =
-        std::min(frame.tipArcLength + (m_phase == Phase::Withdraw ? -0.04 : 0.04), colon.length());
-    const Eigen::Vector3d target = geometry::sampleCentreline(colon, std::max(ahead, 0.0)).point;
+    Eigen::Vector3d target = frame.tipPosition;
+    if (!loop.lumen().contacts().empty()) {
+        const contact::LumenStation& at = loop.lumen().contacts().back().station;
+        target = loop.lumen().tube().centreAlong(at, m_phase == Phase::Withdraw ? -0.04 : 0.04);
+    }
     const Eigen::Vector3d inCamera = loop.outputs().tip.rotation.transpose() * (target - frame.tipPosition);
     if (inCamera.norm() > 1e-6 && m_phase != Phase::Withdraw) {
         // Turn the dials towards the lumen, following its angular offset with
         // a first-order lag (the operator's reaction), within +-1 rad.
-        const double up = std::atan2(inCamera.y(), std::abs(inCamera.z()) + 1e-3);
-        const double left = std::atan2(inCamera.x(), std::abs(inCamera.z()) + 1e-3);
+        double up = std::atan2(inCamera.y(), std::abs(inCamera.z()) + 1e-3);
+        double left = std::atan2(inCamera.x(), std::abs(inCamera.z()) + 1e-3);
         const double follow = std::min(1.0, m_style.steeringGain * dt);
-        m_input.dialUpDown += follow * (std::clamp(up, -1.0, 1.0) - m_input.dialUpDown);
-        m_input.dialLeftRight += follow * (std::clamp(left, -1.0, 1.0) - m_input.dialLeftRight);
+        if (m_style.aimsBeforeInserting) {
+            if (m_phase != Phase::Insert) {
+                up = 0.0;
+                left = 0.0;
+            }
+            // Turn the dials while the lumen is off centre and hold them where it is centred.
+            m_input.dialUpDown = std::clamp(m_input.dialUpDown + follow * up, -2.5, 2.5);
+            m_input.dialLeftRight = std::clamp(m_input.dialLeftRight + follow * left, -2.5, 2.5);
+            m_offCentre = std::hypot(up, left);
+        } else {
+            m_input.dialUpDown += follow * (std::clamp(up, -1.0, 1.0) - m_input.dialUpDown);
+            m_input.dialLeftRight += follow * (std::clamp(left, -1.0, 1.0) - m_input.dialLeftRight);
+        }
     } else {
         m_input.dialUpDown *= 1.0 - dt;  // relax the dials while withdrawing
         m_input.dialLeftRight *= 1.0 - dt;
@@ -72,12 +88,16 @@ InputSample ScriptedOperator::next(const ProcedureLoop& loop)
             m_reduceUntil = std::max(0.0, m_input.insertion - 0.03);
         } else if (frame.tipArcLength >= colon.length() - 0.03 || m_input.insertion >= maxInsertion) {
             m_phase = Phase::Withdraw;
-        } else {
+        } else if (!m_style.aimsBeforeInserting || m_offCentre < kAimedWithin) {
             m_input.insertion = std::min(m_input.insertion + m_style.insertSpeed * dt, maxInsertion);
         }
         break;
     }
     case Phase::ReduceLoop:
+        if (m_style.aimsBeforeInserting) {
+            m_input.dialUpDown *= 1.0 - 2.0 * dt;  // ease the dials back while backing off
+            m_input.dialLeftRight *= 1.0 - 2.0 * dt;
+        }
         // Withdraw with clockwise torque (clockwise seen from the operator: negative rotation).
         m_input.insertion = std::max(m_input.insertion - 0.5 * m_style.insertSpeed * dt, 0.0);
         if (m_style.reducesLoops) {

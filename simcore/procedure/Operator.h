@@ -39,7 +39,16 @@ struct OperatorStyle {
     bool reducesLoops;     ///< withdraws with clockwise torque when a loop forms
     double steeringGain;   ///< 1/s: rate at which the dials follow the lumen's angular offset
     double markDelay;      ///< s a lesion stays in view before it is marked (recognition time)
+    /// Steer, then push: the dials integrate the lumen's offset and hold where
+    /// it is centred, and the scope is fed only while the lumen lies within
+    /// kAimedWithin of the view's centre (the expert); otherwise the dials
+    /// follow the offset and the feed never waits (the novice).
+    bool aimsBeforeInserting = false;
 };
+
+/// Angular offset of the lumen from the view's centre within which an
+/// operator that aims before inserting feeds the scope, rad.
+inline constexpr double kAimedWithin = 0.35;
 
 [[nodiscard]] OperatorStyle expertStyle();
 [[nodiscard]] OperatorStyle noviceStyle();
@@ -54,6 +63,7 @@ private:
     enum class Phase { Insert, ReduceLoop, Withdraw };
     OperatorStyle m_style;
     Phase m_phase = Phase::Insert;
+    double m_offCentre = 0.0;  ///< the lumen's angular offset in the view, rad
     InputSample m_input;
     double m_reduceUntil = 0.0;  ///< insertion at which a loop reduction ends, m
     bool m_finished = false;

@@ -1,5 +1,7 @@
 #include "simcore/procedure/ProcedureLoop.h"
 
+#include <cstdlib>
+
 #include "simcore/geometry/CentrelineSampling.h"
 #include "simcore/physics/StaticSolver.h"
 
@@ -27,17 +29,19 @@ DiscomfortParameters withFailureStrain(DiscomfortParameters p, double strain)
 ProcedureLoop::ProcedureLoop(const geometry::ColonAnatomy& anatomy, const ProcedureSettings& settings)
     : m_anatomy(anatomy), m_settings(settings),
       m_colon(physics::buildColonBody(anatomy, settings.tissue, settings.environment, settings.calibration)),
-      m_scope(settings.scope), m_contact(anatomy.physicsMesh, settings.contact),
-      m_coupling(settings.contact.contactStiffness, settings.contactStepLimit), m_loops(anatomy.centreline),
+      m_scope(settings.scope), m_contact(anatomy, settings.contact),
+      m_coupling(settings.contact.contactStiffness, settings.contactStepLimit, settings.stepping.loopStep),
+      m_loops(anatomy.centreline),
       m_discomfort(withFailureStrain(settings.discomfort, settings.tissue.mesenteryMaxStrain)),
       m_lesions(anatomy, settings.lesions, settings.viewing), m_bleeding(settings.bleeding),
       m_recorder(withColonLength(settings.recorder, anatomy.centreline.length()))
 {
-    // The wall's side of contact is a force term over the tissue substeps; it
-    // is added before the stepping plan is made, which reserves its stiffness.
-    m_wallContact = static_cast<contact::WallContactForce*>(
-        &m_colon.body.addForceTerm(std::make_unique<contact::WallContactForce>(
-            anatomy.physicsMesh, settings.contact, m_colon.body.numNodes())));
+    // Over one loop step a wall node gives way by at most dt^2 / m per newton.
+    const double dt = settings.stepping.loopStep;
+    m_wallCompliance.resize(m_colon.body.numNodes());
+    for (int i = 0; i < m_colon.body.numNodes(); ++i) {
+        m_wallCompliance[i] = m_colon.body.isFixed(i) ? 0.0 : dt * dt / m_colon.body.masses()[i];
+    }
     // Start at rest in equilibrium under gravity and insufflation (the
     // sleeping of nodes at rest assumes it), with no contact yet.
     physics::solveStaticEquilibrium(m_colon.body, 1e-5, 1000);
@@ -54,6 +58,7 @@ ProcedureLoop::ProcedureLoop(const geometry::ColonAnatomy& anatomy, const Proced
 
 void ProcedureLoop::applyContact()
 {
+    m_scope.beginStep(m_settings.stepping.loopStep, m_settings.scope.jointDampingRatio);
     const auto nodes = m_scope.nodePositions();
     const auto n = static_cast<Eigen::Index>(nodes.size());
     m_scopePrevious = m_scopeNow;
@@ -74,26 +79,34 @@ void ProcedureLoop::applyContact()
             m_scopeVelocity.col(i) = (m_scopeNow.col(i) - previous.col(i)) / m_settings.stepping.loopStep;
         }
     }
-    const contact::ContactResult& result =
-        m_contact.compute(m_scopeNow, m_scopeVelocity, previous, 0.5 * m_settings.scope.outerDiameter,
+    const auto& contacts =
+        m_contact.compute(m_scopeNow, m_scopeVelocity, 0.5 * m_settings.scope.outerDiameter,
                           m_colon.body.positions(), m_colon.body.velocities());
-    m_coupling.update(result, m_scope.rod(), static_cast<int>(shift), m_anatomy.physicsMesh,
-                      m_colon.body.positions(), 0.5 * m_settings.scope.outerDiameter);
     m_scope.clearLoads();
-    for (Eigen::Index i = 0; i < n; ++i) {
-        m_scope.setNodeForce(static_cast<int>(i), m_coupling.loads().col(i));
-    }
     m_scope.addGravity(m_settings.environment.gravity *
                        physics::downDirection(m_settings.environment.patientPosition));
+    m_coupling.update(contacts, m_contact, m_scope.rod(), static_cast<int>(shift), m_wallCompliance);
+    m_coupling.solveAndApply(m_scope.rod());
+    m_scope.step();
+    m_coupling.finish(contacts, m_contact);
+    // Friction joins the scope's loads for the next step's solve.
     m_colon.body.clearExternalForces();
-    for (const contact::ScopeContact& c : result.contacts) {
-        // Contact is a load from outside the tissue: it keeps the wall it touches awake.
-        for (const int node : m_anatomy.physicsMesh.triangles[static_cast<size_t>(c.triangle)]) {
-            m_colon.body.holdAwake(node);
+    m_maxWallForce = 0.0;
+    for (Eigen::Index i = 0; i < m_coupling.loads().cols(); ++i) {
+        const Eigen::Vector3d load = m_coupling.loads().col(i);
+        if (load.squaredNorm() == 0.0) {
+            continue;
         }
+        // The wall carries the opposite load, held over the tissue substeps
+        // (it also keeps the nodes it touches awake).
+        const contact::LumenNodeContact& c = contacts[static_cast<size_t>(i)];
+        for (size_t k = 0; k < 4; ++k) {
+            if (c.weights[k] > 0.0) {
+                m_colon.body.applyExternalForce(c.wallNodes[k], -c.weights[k] * load);
+            }
+        }
+        m_maxWallForce = std::max(m_maxWallForce, load.norm());
     }
-    m_wallContact->setContacts(result.contacts, m_coupling.wallPoints(),
-                               0.5 * m_settings.scope.outerDiameter);
 }
 
 const ProcedureOutputs& ProcedureLoop::step(const InputSample& input)
@@ -120,8 +133,7 @@ const ProcedureOutputs& ProcedureLoop::step(const InputSample& input)
             std::clamp(m_colon.insufflation->pressure() + rate * dt, 0.0, m_settings.maxInsufflation));
     }
 
-    applyContact();
-    m_scope.step();
+    applyContact();  // contact is resolved inside the scope's chain iterations
     m_simulation->advance();
     m_time += dt;
     ++m_steps;
@@ -133,24 +145,22 @@ const ProcedureOutputs& ProcedureLoop::step(const InputSample& input)
 
 void ProcedureLoop::updateBleeding()
 {
-    // The wall's load at each contact: the normal loads of the segment's two
-    // scope nodes, interpolated at the contact (ContactCoupling's lambda,
-    // what the scope actually pushes with after the coupling).
-    const contact::ContactResult& contacts = m_contact.result();
-    const std::vector<Eigen::Vector3d>& nodeLoads = m_coupling.normalLoads();
-    const geometry::TriangleMesh& rest = m_anatomy.physicsMesh;
+    // The wall's load at each scope node in contact: the normal part of the
+    // coupling's load on the node, at the contact's wall point at rest.
+    const std::vector<contact::LumenNodeContact>& contacts = m_contact.contacts();
+    const Eigen::Matrix3Xd& loads = m_coupling.loads();
+    const Eigen::Matrix3Xd& rest = m_anatomy.physicsMesh.vertices;
     m_wallLoads.clear();
-    for (const contact::ScopeContact& c : contacts.contacts) {
-        const auto a = static_cast<size_t>(c.segment);
-        if (c.segment < 0 || a + 1 >= nodeLoads.size()) {
+    for (Eigen::Index i = 0; i < loads.cols() && static_cast<size_t>(i) < contacts.size(); ++i) {
+        const contact::LumenNodeContact& c = contacts[static_cast<size_t>(i)];
+        const double force = loads.col(i).dot(c.normal);
+        if (!(force > 0.0)) {
             continue;
         }
-        const double force =
-            (1.0 - c.segmentParam) * nodeLoads[a].norm() + c.segmentParam * nodeLoads[a + 1].norm();
-        const auto& t = rest.triangles[static_cast<size_t>(c.triangle)];
-        const Eigen::Vector3d point = c.barycentric.x() * rest.vertices.col(t[0]) +
-                                      c.barycentric.y() * rest.vertices.col(t[1]) +
-                                      c.barycentric.z() * rest.vertices.col(t[2]);
+        Eigen::Vector3d point = Eigen::Vector3d::Zero();
+        for (size_t k = 0; k < 4; ++k) {
+            point += c.weights[k] * rest.col(c.wallNodes[k]);
+        }
         m_wallLoads.push_back(WallLoad{point, force});
     }
     const int appeared = m_bleeding.update(m_wallLoads, m_settings.stepping.loopStep, m_time);
@@ -185,7 +195,12 @@ void ProcedureLoop::observe()
     f.tipPosition = tip.position;
     f.tipDirection = tip.rotation.col(2);
     if (m_steps % kLoopDetectionInterval == 0) {
-        m_loops.update(m_scopeNow, m_input.insertion);
+        const auto& stations = m_contact.contacts();
+        m_nodeArcs.resize(stations.size());
+        for (size_t i = 0; i < stations.size(); ++i) {
+            m_nodeArcs[i] = m_contact.tube().arcLength(stations[i].station);
+        }
+        m_loops.update(m_scopeNow, m_input.insertion, m_nodeArcs);
     }
     f.loop = m_loops.current();
     f.tipArcLength = m_loops.signals().tipArcLength;
@@ -193,12 +208,11 @@ void ProcedureLoop::observe()
     f.tipSegment = at.segment;
     f.colonTangentAtTip = at.tangent;
 
-    const contact::ContactResult& contacts = m_contact.result();
-    f.maxWallForce = contacts.maxWallForce;
-    const Eigen::Index tipSegment = m_scopeNow.cols() - 2;
-    for (const contact::ScopeContact& c : contacts.contacts) {
-        // The lens is against the wall: a contact near the tip on a wall that faces it.
-        if (c.segment == tipSegment && c.segmentParam > 0.7 && c.normal.dot(f.tipDirection) < -0.5) {
+    f.maxWallForce = m_maxWallForce;
+    if (!m_contact.contacts().empty()) {
+        // The lens is against the wall: the tip pressed on a wall that faces it.
+        const contact::LumenNodeContact& tipContact = m_contact.contacts().back();
+        if (tipContact.depth >= 0.0 && tipContact.normal.dot(f.tipDirection) < -0.5) {
             f.lensWallDistance = 0.0;
         }
     }

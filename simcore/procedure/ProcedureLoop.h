@@ -6,12 +6,13 @@
 ///   1. the input is validated at the device boundary (a refused sample is
 ///      recorded as an event and the last valid one is used);
 ///   2. the handle (insertion, shaft rotation) and the dials drive the scope;
-///   3. scope-wall contact is computed on the current shapes (continuous
-///      detection against the previous scope positions; a sleeping wall is
-///      still a wall, so the whole wall is searched); ContactCoupling turns
-///      it into the scope's node loads (one Newton step with the rod's
-///      compliance) and into a force term on the wall (WallContactForce)
-///      that meets the scope through the same compliance over the substeps;
+///   3. scope-wall contact is measured on the current shapes against the
+///      lumen (LumenContact: every scope node's signed depth in its own
+///      section of the tube, so it cannot tunnel); ContactCoupling settles
+///      the normal forces in one Newton step with the compliance of the rod
+///      and of the wall's nodes over the step, and the scope's loads go to
+///      the chain solver while their opposites are held on the wall's nodes
+///      over the tissue substeps;
 ///   The colon is first settled to static equilibrium under gravity and
 ///   insufflation, so nodes at rest may sleep.
 ///   4. the scope's chain solver runs its iterations; the colon advances one
@@ -25,8 +26,7 @@
 /// Everything is deterministic: the same case, build and input trace give a
 /// bit-identical recording.
 
-#include "simcore/contact/ScopeWallContact.h"
-#include "simcore/contact/WallContactForce.h"
+#include "simcore/contact/LumenContact.h"
 #include "simcore/geometry/ColonAnatomy.h"
 #include "simcore/physics/ActiveRegion.h"
 #include "simcore/physics/ColonBody.h"
@@ -98,6 +98,9 @@ public:
     [[nodiscard]] const physics::ColonBody& colon() const { return m_colon; }
     [[nodiscard]] const LoopDetector& loops() const { return m_loops; }
     [[nodiscard]] const physics::TissueSimulation& tissue() const { return *m_simulation; }
+    /// The deformed lumen and each scope node's contact, as of the last step.
+    [[nodiscard]] const contact::LumenContact& lumen() const { return m_contact; }
+    [[nodiscard]] const ContactCoupling& coupling() const { return m_coupling; }
     /// The contact bleeding marks so far, placed on the wall's chart for the
     /// endoscope view; bleeding() has the model's marks (rest points, forces).
     [[nodiscard]] const std::vector<render::BleedingMark>& bleedingMarks() const { return m_viewMarks; }
@@ -114,9 +117,10 @@ private:
     std::unique_ptr<physics::TissueSimulation> m_simulation;
     std::unique_ptr<physics::ActiveRegion> m_region;
     scope::Colonoscope m_scope;
-    contact::ScopeWallContact m_contact;
-    contact::WallContactForce* m_wallContact = nullptr;
+    contact::LumenContact m_contact;
+    Eigen::VectorXd m_wallCompliance;  ///< dt^2 / m per wall node (0 fixed), m/N
     ContactCoupling m_coupling;
+    std::vector<double> m_nodeArcs;  ///< each scope node's place along the colon (lumen station), m
     LoopDetector m_loops;
     DiscomfortModel m_discomfort;
     LesionView m_lesions;
@@ -131,6 +135,7 @@ private:
     ProcedureOutputs m_outputs;
     Eigen::Matrix3Xd m_scopeNow, m_scopePrevious, m_scopeVelocity;
     Eigen::Matrix3Xd m_scopeAligned;  ///< the previous shape aligned from the tip (continuous detection)
+    double m_maxWallForce = 0.0;      ///< largest contact load on one scope node this step, N
     double m_time = 0.0;
     long m_steps = 0;
 };

@@ -1,6 +1,8 @@
 #include "simcore/scope/ChainSolver.h"
 
 #include <algorithm>
+#include <cstdlib>
+#include <vector>
 
 namespace colonosim::scope {
 
@@ -18,8 +20,10 @@ double solveChain(DiscreteRod& rod, int iterations, double relaxation)
                 m += (rod.position[i + 1] - rod.position[i]).cross(f);  // eq 1: moment about node k
             }
             const Eigen::Vector3d stiffness = rod.jointStiffness(k);
-            const Eigen::Vector3d net = rod.frame[i].transpose() * m - stiffness.cwiseProduct(rod.theta[i]);
-            const Eigen::Vector3d step = relaxation * net.cwiseQuotient(stiffness);
+            const Eigen::Vector3d& damping = rod.damping[i];
+            const Eigen::Vector3d net = rod.frame[i].transpose() * m - stiffness.cwiseProduct(rod.theta[i]) -
+                                        damping.cwiseProduct(rod.theta[i] - rod.thetaStart[i]);
+            const Eigen::Vector3d step = relaxation * net.cwiseQuotient(stiffness + damping);
             rod.theta[i] += step;  // eqs 4-5
             largest = std::max(largest, step.cwiseAbs().maxCoeff());
             f += rod.force[i];

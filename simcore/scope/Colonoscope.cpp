@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <numbers>
 #include <string>
 
@@ -125,9 +126,42 @@ void Colonoscope::addGravity(const Eigen::Vector3d& gravity)
     }
 }
 
+void Colonoscope::beginStep(double dt, double dampingRatio)
+{
+    const int n = m_rod.numNodes();
+    m_rod.thetaStart = m_rod.theta;
+    m_rod.damping.assign(static_cast<size_t>(n), Eigen::Vector3d::Zero());
+    if (!(dt > 0.0) || !(dampingRatio > 0.0)) {
+        return;
+    }
+    const double element = m_rod.elementLength * m_parameters.linearMassDensity;
+    double mass = 0.0;
+    Eigen::Vector3d first = Eigen::Vector3d::Zero();
+    double second = 0.0;
+    for (int k = n - 1; k >= 0; --k) {
+        const auto i = static_cast<size_t>(k);
+        const Eigen::Vector3d& x = m_rod.position[i];
+        const double inertia = std::max(0.0, second - 2.0 * x.dot(first) + x.squaredNorm() * mass);
+        const Eigen::Vector3d k3 = m_rod.jointStiffness(k);
+        m_rod.damping[i] = 2.0 * dampingRatio / dt * (k3 * inertia).cwiseSqrt();
+        const double m = k == n - 1 ? 0.5 * element : element;
+        mass += m;
+        first += m * x;
+        second += m * x.squaredNorm();
+    }
+}
+
 void Colonoscope::step()
 {
     solveChain(m_rod, static_cast<int>(m_parameters.solverIterations), m_parameters.solverRelaxation);
+}
+
+void Colonoscope::step(const std::function<void(DiscreteRod&)>& afterIteration)
+{
+    for (int it = 0; it < static_cast<int>(m_parameters.solverIterations); ++it) {
+        solveChain(m_rod, 1, m_parameters.solverRelaxation);
+        afterIteration(m_rod);
+    }
 }
 
 TipPose Colonoscope::tipPose() const

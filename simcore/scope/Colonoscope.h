@@ -37,6 +37,7 @@
 
 #include <Eigen/Core>
 
+#include <functional>
 #include <span>
 
 namespace colonosim::scope {
@@ -82,8 +83,15 @@ public:
     /// to the node forces, lumped per node.
     void addGravity(const Eigen::Vector3d& gravity);
 
+    /// Starts a time step of `dt` s: each joint is damped by the inertia of
+    /// the scope downstream of it, I_k = sum_{j > k} m_j |x_j - x_k|^2, at
+    /// damping ratio zeta: D_k = 2 zeta sqrt(K_k I_k) / dt.
+    void beginStep(double dt, double dampingRatio);
     /// One time step: `solverIterations` chain iterations, warm-started.
     void step();
+    /// The same, calling `afterIteration` on the rod after each iteration
+    /// (loads that depend on the shape, such as contact, are updated there).
+    void step(const std::function<void(DiscreteRod&)>& afterIteration);
 
     [[nodiscard]] std::span<const Eigen::Vector3d> nodePositions() const { return m_rod.position; }
     [[nodiscard]] TipPose tipPose() const;

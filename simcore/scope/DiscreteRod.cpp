@@ -10,7 +10,7 @@ void DiscreteRod::reset(int numNodes, double length, double flexuralRigidity, do
                         int capacity)
 {
     const auto cap = static_cast<size_t>(std::max(capacity, numNodes));
-    for (auto* v : {&theta, &force, &torque, &position}) {
+    for (auto* v : {&theta, &force, &torque, &position, &damping, &thetaStart}) {
         v->reserve(cap);
         v->assign(static_cast<size_t>(numNodes), Eigen::Vector3d::Zero());
     }
@@ -52,6 +52,17 @@ void DiscreteRod::resizeAtBase(int numNodes)
         std::copy_backward(theta.begin(), theta.begin() + old, theta.end());
         std::fill(theta.begin(), theta.begin() + static_cast<std::ptrdiff_t>(added), Eigen::Vector3d::Zero());
     } else if (numNodes < old) {
+        // The joints that leave at the base pass their rotation on to the new
+        // first joint, so every element that stays keeps its direction (the
+        // stays are translated by at most l |Theta_0|, not turned about the
+        // clamp by the dropped angles).
+        const auto dropped = static_cast<size_t>(old - numNodes);
+        Eigen::Matrix3d carried = Eigen::Matrix3d::Identity();
+        for (size_t k = 0; k <= dropped; ++k) {
+            carried =
+                carried * (hasDial[k] ? dial[k] : Eigen::Matrix3d::Identity()) * rotationFromVector(theta[k]);
+        }
+        theta[dropped] = vectorFromRotation(carried);
         std::copy(theta.begin() + (old - numNodes), theta.end(), theta.begin());
         theta.resize(n);
     }
@@ -59,6 +70,8 @@ void DiscreteRod::resizeAtBase(int numNodes)
     hasDial.assign(n, 0);
     force.assign(n, Eigen::Vector3d::Zero());
     torque.assign(n, Eigen::Vector3d::Zero());
+    damping.assign(n, Eigen::Vector3d::Zero());
+    thetaStart = theta;
     position.resize(n);
     frame.resize(n);
     rebuild();

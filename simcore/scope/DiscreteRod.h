@@ -54,12 +54,21 @@ struct DiscreteRod {
     std::vector<Eigen::Vector3d> torque;    ///< per node, N m
     std::vector<Eigen::Vector3d> position;  ///< x_k, m (derived)
     std::vector<Eigen::Matrix3d> frame;     ///< C_k; C_{n-1} is the tip frame (derived)
+    /// D_k, the step's damping of joint k, N m/rad (0: quasi-static); the
+    /// chain solves K Theta + D (Theta - thetaStart) = C^T M.
+    std::vector<Eigen::Vector3d> damping;
+    std::vector<Eigen::Vector3d> thetaStart;  ///< Theta at the start of the step, rad
 
     /// A straight rod of `numNodes` nodes (capacity `capacity` >= numNodes).
     void reset(int numNodes, double length, double flexuralRigidity, double torsionalRigidity, int capacity);
     [[nodiscard]] int numNodes() const { return static_cast<int>(theta.size()); }
     /// K_k: see above for the clamp and tip joints.
     [[nodiscard]] Eigen::Vector3d jointStiffness(int joint) const;
+    /// K_k + D_k: how joint k resists a load within one step.
+    [[nodiscard]] Eigen::Vector3d jointResistance(int joint) const
+    {
+        return jointStiffness(joint) + damping[static_cast<size_t>(joint)];
+    }
     /// Frame before joint k: C_{k-1}, or the clamp frame for k = 0.
     [[nodiscard]] const Eigen::Matrix3d& frameBefore(int joint) const;
     /// Changes the node count keeping the tip end: joints are added (straight)

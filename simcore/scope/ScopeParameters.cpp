@@ -9,7 +9,7 @@ namespace colonosim::scope {
 
 namespace {
 using S = ScopeParameters;
-constexpr std::array<Field<S>, 11> kScopeFields{{
+constexpr std::array<Field<S>, 12> kScopeFields{{
     {&S::workingLengthSpec, &S::workingLength},
     {&S::outerDiameterSpec, &S::outerDiameter},
     {&S::flexuralRigiditySpec, &S::flexuralRigidity},
@@ -21,6 +21,7 @@ constexpr std::array<Field<S>, 11> kScopeFields{{
     {&S::maxLeftRightSpec, &S::maxLeftRightAngulation},
     {&S::iterationsSpec, &S::solverIterations},
     {&S::relaxationSpec, &S::solverRelaxation},
+    {&S::jointDampingSpec, &S::jointDampingRatio},
 }};
 }  // namespace
 

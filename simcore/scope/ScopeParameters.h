@@ -99,6 +99,16 @@ struct ScopeParameters {
         "under-relaxation of the chain solver's deformation increment (eq 4: dTheta = w F / k)",
         "assumption: 1 (the paper's eq 4) fails to settle at PL^2/EI = 4; 0.5 converges there in 14 "
         "iterations, but not at PL^2/EI = 8 (tests/scope)"};
+    static constexpr ParameterSpec jointDampingSpec{
+        "jointDampingRatio",
+        "1",
+        1.0,
+        0.0,
+        5.0,
+        "damping ratio zeta of each joint against the inertia I of the scope beyond it, "
+        "D = 2 zeta sqrt(K I) / dt, in the chain and in the contact compliance alike (0: quasi-static)",
+        "model choice: the quasi-static rod has no inertia, so a load change moved the free tip tens of "
+        "millimetres in one step; critical damping (1) removes those jumps and leaves the statics unchanged"};
 
     double workingLength = workingLengthSpec.defaultValue;
     double outerDiameter = outerDiameterSpec.defaultValue;
@@ -111,6 +121,7 @@ struct ScopeParameters {
     double maxLeftRightAngulation = maxLeftRightSpec.defaultValue;
     double solverIterations = iterationsSpec.defaultValue;
     double solverRelaxation = relaxationSpec.defaultValue;
+    double jointDampingRatio = jointDampingSpec.defaultValue;
 
     [[nodiscard]] static std::span<const Field<ScopeParameters>> fields();
     /// Throws ParameterError naming field, value and range; counts must be whole.

@@ -1,23 +1,34 @@
-// The scope's side of contact: the Delassus matrix of the clamped rod against
-// the chain solver's own response, the one-step Newton update, the trust
-// region, release, and the wall's view of a contact.
+// The scope's side of contact on the lumen: the Delassus matrix of the
+// clamped rod against the chain solver's own response, the one-step Newton
+// update, the trust region, release, and the wall's compliance in series.
+//
+// Each scope node gets a hand-made LumenNodeContact: its own wall cylinder
+// along the scope (+x), whose axis lies `height` above the node (+y), so the
+// node's depth is height + r - R and its normal is +y (onto the scope, into
+// the lumen). A node moved up by dy loses dy of depth, as on a real wall.
 
 #include "simcore/procedure/ContactCoupling.h"
+#include "simcore/geometry/ProceduralColon.h"
 #include "simcore/scope/Colonoscope.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 
 namespace {
 
-using colonosim::contact::ContactResult;
-using colonosim::contact::ScopeContact;
+using colonosim::contact::ContactParameters;
+using colonosim::contact::LumenContact;
+using colonosim::contact::LumenNodeContact;
 using colonosim::procedure::ContactCoupling;
 using colonosim::scope::Colonoscope;
 
-constexpr double kStiffness = 1e4;  // N/m, the declared contact stiffness
-constexpr double kRadius = 0.0065;  // m
+constexpr double kStiffness = 1e4;    // N/m, the declared contact stiffness
+constexpr double kRadius = 0.0065;    // m, scope
+constexpr double kWallRadius = 0.02;  // m
+constexpr double kLoopStep = 1e-3;    // s
+constexpr double kClear = -0.05;      // m: a node 5 cm from its wall
 
 Colonoscope straightScope(double insertion)
 {
@@ -27,31 +38,44 @@ Colonoscope straightScope(double insertion)
     return scope;
 }
 
-/// A penalty contact on node `node` (as the end of segment node - 1) pushing along +y.
-ScopeContact contactAt(int node, double depth)
+/// One contact per inserted node: `depths` gives the pressed nodes' depths
+/// (m), every other node is well clear. The wall point is wall node 0.
+std::vector<LumenNodeContact> contactsOn(const Colonoscope& scope, const std::map<int, double>& depths)
 {
-    ScopeContact c;
-    c.segment = node - 1;
-    c.segmentParam = 1.0;
-    c.triangle = 0;
-    c.depth = depth;
-    c.normal = Eigen::Vector3d::UnitY();
-    c.normalForce = kStiffness * depth;
-    return c;
+    const auto nodes = scope.nodePositions();
+    std::vector<LumenNodeContact> contacts(nodes.size());
+    for (size_t i = 0; i < nodes.size(); ++i) {
+        const auto it = depths.find(static_cast<int>(i));
+        const double depth = it != depths.end() ? it->second : kClear;
+        const double height = kWallRadius - kRadius + depth;
+        LumenNodeContact& c = contacts[i];
+        c.depth = depth;
+        c.normal = Eigen::Vector3d::UnitY();
+        c.lever = height;
+        c.wallNodes = {0, 0, 0, 0};
+        c.weights = {1.0, 0.0, 0.0, 0.0};
+        c.wallCentre = nodes[i] + Eigen::Vector3d(0.0, height, 0.0);
+        c.wallAxis = Eigen::Vector3d::UnitX();
+        c.wallRadius = kWallRadius;
+        c.scopeRadius = kRadius;
+    }
+    return contacts;
 }
 
-/// A wall triangle under `node`, facing +y, one radius below the axis.
-colonosim::geometry::TriangleMesh floorUnder(const Eigen::Vector3d& node, Eigen::Matrix3Xd& wall)
+/// The contact law (its parameters and friction), frictionless here; its
+/// tube (the default colon's) is not used by the hand-made contacts.
+const LumenContact& law()
 {
-    colonosim::geometry::TriangleMesh mesh;
-    mesh.vertices.resize(3, 3);
-    mesh.vertices.col(0) = node + Eigen::Vector3d(-0.01, -kRadius, -0.01);
-    mesh.vertices.col(1) = node + Eigen::Vector3d(0.0, -kRadius, 0.02);
-    mesh.vertices.col(2) = node + Eigen::Vector3d(0.01, -kRadius, -0.01);
-    mesh.triangles.push_back({0, 1, 2});
-    wall = mesh.vertices;
-    return mesh;
+    static const LumenContact contact = [] {
+        ContactParameters parameters;
+        parameters.frictionCoefficient = 0.0;
+        return LumenContact(
+            colonosim::geometry::buildProceduralColon(colonosim::geometry::AnatomyParameters{}), parameters);
+    }();
+    return contact;
 }
+
+const Eigen::VectorXd kRigidWall = Eigen::VectorXd::Zero(1);
 
 double solvedDeflection(Colonoscope& scope, int node, const Eigen::Vector3d& force, int measured)
 {
@@ -77,14 +101,11 @@ TEST(ContactCoupling, DelassusMatrixIsTheRodsOwnCompliance)
     Colonoscope scope = straightScope(0.2);
     const int tip = scope.numInsertedNodes() - 1;
     const int mid = tip / 2;
-    Eigen::Matrix3Xd wall;
-    const auto mesh = floorUnder(scope.nodePositions().back(), wall);
-    ContactResult raw;
-    raw.contacts = {contactAt(mid, 1e-6), contactAt(tip, 1e-6)};
-    ContactCoupling coupling(kStiffness, 1.0);
-    coupling.update(raw, scope.rod(), 0, mesh, wall, kRadius);
+    const auto contacts = contactsOn(scope, {{mid, 1e-6}, {tip, 1e-6}});
+    ContactCoupling coupling(kStiffness, 1.0, kLoopStep);
+    coupling.update(contacts, law(), scope.rod(), 0, kRigidWall);
     ASSERT_EQ(coupling.activeNodes().size(), 2U);
-    const Eigen::MatrixXd& g = coupling.delassus();
+    const Eigen::MatrixXd g = coupling.delassus();
     const double f = 1e-4;  // N
     const double gTipTip = solvedDeflection(scope, tip, Eigen::Vector3d(0.0, f, 0.0), tip) / f;
     const double gMidTip = solvedDeflection(scope, tip, Eigen::Vector3d(0.0, f, 0.0), mid) / f;
@@ -97,27 +118,26 @@ TEST(ContactCoupling, DelassusMatrixIsTheRodsOwnCompliance)
     EXPECT_NEAR(g(1, 1), std::pow(0.2, 3) / (3.0 * ei), 0.01 * g(1, 1));
 }
 
-// For one contact the Newton step is exact: lambda = k_c d0 / (1 + k_c G),
-// and once the rod carries it, the remaining depth gives back lambda = k_c d.
+// For one contact the solve is the Newton step: lambda = k_c d0 / (1 + k_c G)
+// (the depth re-measured on the wall at the predicted position loses G lambda),
+// and the rod under lambda rises by G lambda.
 TEST(ContactCoupling, OneContactIsResolvedInOneStep)
 {
     Colonoscope scope = straightScope(0.15);
     const int tip = scope.numInsertedNodes() - 1;
-    Eigen::Matrix3Xd wall;
-    const auto mesh = floorUnder(scope.nodePositions().back(), wall);
     const double depth = 2e-3;  // m
-    ContactResult raw;
-    raw.contacts = {contactAt(tip, depth)};
-    ContactCoupling coupling(kStiffness, 1.0);
-    coupling.update(raw, scope.rod(), 0, mesh, wall, kRadius);
+    const auto contacts = contactsOn(scope, {{tip, depth}});
+    ContactCoupling coupling(kStiffness, 1.0, kLoopStep);
+    coupling.update(contacts, law(), scope.rod(), 0, kRigidWall);
+    ASSERT_EQ(coupling.activeNodes().size(), 1U);
+    coupling.solveAndApply(scope.rod());
+    coupling.finish(contacts, law());
     const double g = coupling.delassus()(0, 0);
     const double lambda = coupling.loads().col(tip).y();
-    EXPECT_NEAR(lambda, kStiffness * depth / (1.0 + kStiffness * g), 1e-9);
+    EXPECT_NEAR(lambda, kStiffness * depth / (1.0 + kStiffness * g), 1e-3 * lambda);
     for (int i = 0; i < tip; ++i) {
-        EXPECT_EQ(coupling.loads().col(i).norm(), 0.0);
+        EXPECT_EQ(coupling.loads().col(i).norm(), 0.0) << "node " << i;
     }
-    // The rod under lambda rises by G lambda (so the depth left, d - G lambda,
-    // has the penalty force lambda: equilibrium in one step).
     const double rise = solvedDeflection(scope, tip, Eigen::Vector3d(0.0, lambda, 0.0), tip);
     EXPECT_NEAR(rise, g * lambda, 1e-3 * rise);
     EXPECT_GT(rise, 0.99 * depth) << "a 15 cm tip is far softer than the penalty: it gives way";
@@ -128,59 +148,65 @@ TEST(ContactCoupling, TheTrustRegionBoundsTheMotionOfOneStep)
 {
     Colonoscope scope = straightScope(0.3);
     const int tip = scope.numInsertedNodes() - 1;
-    Eigen::Matrix3Xd wall;
-    const auto mesh = floorUnder(scope.nodePositions().back(), wall);
-    ContactResult raw;
-    raw.contacts = {contactAt(tip, 0.02)};
-    const double maxStep = 1e-4;
-    ContactCoupling coupling(kStiffness, maxStep);
-    coupling.update(raw, scope.rod(), 0, mesh, wall, kRadius);
+    const auto contacts = contactsOn(scope, {{tip, 0.02}});
+    const double maxStep = 1e-4;  // m
+    ContactCoupling coupling(kStiffness, maxStep, kLoopStep);
+    coupling.update(contacts, law(), scope.rod(), 0, kRigidWall);
+    coupling.solveAndApply(scope.rod());
+    coupling.finish(contacts, law());
     const double g = coupling.delassus()(0, 0);
     const double lambda = coupling.loads().col(tip).y();
     EXPECT_GT(lambda, 0.0);
-    EXPECT_NEAR(g * lambda, maxStep, 1e-12);
+    // The whole predicted motion |C n| lambda is held to maxStep; its normal
+    // part G lambda is at most that, and on a straight cantilever nearly all of it.
+    EXPECT_LE(g * lambda, maxStep * (1.0 + 1e-9));
+    EXPECT_GT(g * lambda, 0.99 * maxStep);
 }
 
 // A node that carried a load and is now clear of its wall lets go at once;
-// no load pulls, and a node that never touched carries nothing.
+// no load pulls.
 TEST(ContactCoupling, ReleaseIsImmediateAndContactNeverPulls)
 {
     Colonoscope scope = straightScope(0.15);
     const int tip = scope.numInsertedNodes() - 1;
-    Eigen::Matrix3Xd wall;
-    const auto mesh = floorUnder(scope.nodePositions().back(), wall);
-    ContactResult raw;
-    raw.contacts = {contactAt(tip, 1e-3)};
-    ContactCoupling coupling(kStiffness, 1.0);
-    coupling.update(raw, scope.rod(), 0, mesh, wall, kRadius);
+    const auto pressed = contactsOn(scope, {{tip, 1e-3}});
+    ContactCoupling coupling(kStiffness, 1.0, kLoopStep);
+    coupling.update(pressed, law(), scope.rod(), 0, kRigidWall);
+    coupling.solveAndApply(scope.rod());
+    coupling.finish(pressed, law());
     ASSERT_GT(coupling.loads().col(tip).y(), 0.0);
-    // The wall drops 5 mm away: no contact found this step.
-    wall.row(1).array() -= 0.005;
-    coupling.update(ContactResult{}, scope.rod(), 0, mesh, wall, kRadius);
+    // The wall moves 5 mm away: the node still carries its load into the
+    // update (it is active), and the solve releases it.
+    const auto clear = contactsOn(scope, {{tip, -0.005}});
+    coupling.update(clear, law(), scope.rod(), 0, kRigidWall);
+    EXPECT_EQ(coupling.activeNodes().size(), 1U);
+    coupling.solveAndApply(scope.rod());
+    coupling.finish(clear, law());
     EXPECT_EQ(coupling.loads().col(tip).norm(), 0.0);
-    EXPECT_TRUE(coupling.activeNodes().empty() ||
-                coupling.normalLoads()[static_cast<size_t>(tip)].norm() == 0.0);
+    for (int i = 0; i < scope.numInsertedNodes(); ++i) {
+        EXPECT_GE(coupling.loads().col(i).y(), 0.0) << "node " << i;
+    }
 }
 
-// The wall meets the scope through its compliance: k_eff = k_c / (1 + k_c G)
-// and the depth offset is the scope's deflection under its current load.
-TEST(ContactCoupling, TheWallSeesTheSeriesStiffness)
+// The wall's compliance (dt^2 / m of its node, weighted) adds to the rod's
+// in series: G grows by exactly that, and the same depth gives less load.
+TEST(ContactCoupling, TheWallsComplianceAddsInSeries)
 {
-    Colonoscope scope = straightScope(0.15);
+    Colonoscope scope = straightScope(0.08);
     const int tip = scope.numInsertedNodes() - 1;
-    Eigen::Matrix3Xd wall;
-    const auto mesh = floorUnder(scope.nodePositions().back(), wall);
-    ContactResult raw;
-    raw.contacts = {contactAt(tip, 1e-3)};
-    ContactCoupling coupling(kStiffness, 1.0);
-    coupling.update(raw, scope.rod(), 0, mesh, wall, kRadius);
-    const double g = coupling.delassus()(0, 0);
-    const double lambda = coupling.loads().col(tip).y();
-    ASSERT_EQ(coupling.wallPoints().size(), 1U);
-    const auto& p = coupling.wallPoints()[0];
-    EXPECT_NEAR(p.stiffness, kStiffness / (1.0 + kStiffness * g), 1e-9);
-    EXPECT_NEAR(p.depthOffset, g * lambda, 1e-15);
-    EXPECT_LE(p.stiffness, kStiffness);
+    const auto contacts = contactsOn(scope, {{tip, 1e-3}});
+    ContactCoupling rigid(kStiffness, 1.0, kLoopStep);
+    rigid.update(contacts, law(), scope.rod(), 0, kRigidWall);
+    const Eigen::VectorXd soft = Eigen::VectorXd::Constant(1, 2e-3);  // m/N: a 0.5 g node at 1 ms
+    ContactCoupling compliant(kStiffness, 1.0, kLoopStep);
+    compliant.update(contacts, law(), scope.rod(), 0, soft);
+    EXPECT_NEAR(compliant.delassus()(0, 0) - rigid.delassus()(0, 0), 2e-3, 1e-12);
+    rigid.solveAndApply(scope.rod());
+    rigid.finish(contacts, law());
+    compliant.solveAndApply(scope.rod());
+    compliant.finish(contacts, law());
+    EXPECT_LT(compliant.loads().col(tip).y(), rigid.loads().col(tip).y());
+    EXPECT_GT(compliant.loads().col(tip).y(), 0.0);
 }
 
 }  // namespace

@@ -1,0 +1,81 @@
+#pragma once
+/// \file
+/// Scope-wall contact against the lumen (LumenTube.h): for every scope node,
+/// its signed depth into the wall, the contact normal, the wall point's nodes
+/// and weights, and the slip velocity for friction.
+///
+/// A scope node p of radius r at its station (found by walking from the
+/// previous node's section, the base node from the anus) lies at distance d
+/// from the lumen axis, where the wall is at radius R along the same radial
+/// direction e:
+///   depth = d + r - R    (> 0: pressed into the wall),  normal = -e
+/// (onto the scope, towards the axis). Beyond the dome ring the closed cecal
+/// end adds an axial depth h + r - H (h the node's height past the dome
+/// ring, H the apex's), normal -a, on the apex; the deeper of the two counts.
+/// Every node gets an entry, in contact or not, so the coupling releases a
+/// load as soon as the wall has moved away (depth < 0).
+///
+/// Friction is Coulomb with the regularised stick of ScopeWallContact.h,
+/// f_t = -mu f_n v_t / max(|v_t|, v_s), v_t the tangential part of the scope
+/// node's velocity relative to the wall point; it is applied with the normal
+/// force the coupling settles on (procedure/ContactCoupling.h).
+
+#include "simcore/contact/ContactParameters.h"
+#include "simcore/contact/LumenTube.h"
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace colonosim::contact {
+
+struct LumenNodeContact {
+    double depth = 0.0;                                ///< signed, m: > 0 pressed into the wall
+    Eigen::Vector3d normal = Eigen::Vector3d::Zero();  ///< unit, onto the scope, into the lumen
+    Eigen::Vector3d slip = Eigen::Vector3d::Zero();    ///< tangential velocity, scope minus wall, m/s
+    double lever = 0.0;  ///< distance from the lumen axis (radial) or the apex (end cap), m: the normal turns
+                         ///< by dx / lever
+    std::array<int, 4> wallNodes{};   ///< the wall point's nodes
+    std::array<double, 4> weights{};  ///< their weights (sum 1)
+    LumenStation station;
+    bool endCap = false;  ///< against the closed cecal end
+    // The local wall as a cylinder (axis point, unit axis, wall radius) or,
+    // for the end cap, a plane (point on it, unit normal into the lumen):
+    // the contact re-measured at nearby points without a new search.
+    Eigen::Vector3d wallCentre = Eigen::Vector3d::Zero();
+    Eigen::Vector3d wallAxis = Eigen::Vector3d::UnitZ();
+    double wallRadius = 0.0;   ///< m (cylinder)
+    double scopeRadius = 0.0;  ///< m
+
+    /// Signed depth at a point `x` near the node on the local wall, m; `n`
+    /// receives the normal (onto the scope, into the lumen).
+    [[nodiscard]] double depthAt(const Eigen::Vector3d& x, Eigen::Vector3d& n) const;
+};
+
+class LumenContact {
+public:
+    /// Throws params::ParameterError for invalid parameters or a mesh that
+    /// is not a tube of rings.
+    LumenContact(const geometry::ColonAnatomy& anatomy, const ContactParameters& parameters);
+
+    /// One entry per scope node (3 x n positions and velocities, base to tip).
+    const std::vector<LumenNodeContact>& compute(const Eigen::Matrix3Xd& scope,
+                                                 const Eigen::Matrix3Xd& scopeVelocities, double radius,
+                                                 const Eigen::Matrix3Xd& wall,
+                                                 const Eigen::Matrix3Xd& wallVelocities);
+    [[nodiscard]] const std::vector<LumenNodeContact>& contacts() const { return m_contacts; }
+    [[nodiscard]] const LumenTube& tube() const { return m_tube; }
+    [[nodiscard]] const ContactParameters& parameters() const { return m_parameters; }
+
+    /// Friction on the scope for normal force `normalForce` at `contact`, N,
+    /// with the stick regularised below max(v_s, `minStickVelocity`) m/s.
+    [[nodiscard]] Eigen::Vector3d friction(const LumenNodeContact& contact, double normalForce,
+                                           double minStickVelocity = 0.0) const;
+
+private:
+    ContactParameters m_parameters;
+    LumenTube m_tube;
+    std::vector<LumenNodeContact> m_contacts;
+};
+
+}  // namespace colonosim::contact

@@ -1,0 +1,251 @@
+#include "simcore/contact/LumenTube.h"
+
+#include "simcore/params/Parameter.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <string>
+
+namespace colonosim::contact {
+
+namespace {
+double cross2(const Eigen::Vector2d& a, const Eigen::Vector2d& b)
+{
+    return a.x() * b.y() - a.y() * b.x();
+}
+}  // namespace
+
+LumenTube::LumenTube(const geometry::ColonAnatomy& anatomy)
+{
+    const auto& info = anatomy.physicsNodes;
+    const int n = static_cast<int>(info.size());
+    const auto refuse = [](const std::string& why) {
+        throw params::ParameterError("physics mesh: " + why +
+                                     " (lumen contact needs the procedural tube of rings)");
+    };
+    if (n < 7 || anatomy.physicsMesh.numVertices() != n) {
+        refuse("numVertices = " + std::to_string(n) + " is not a tube of at least two rings and an apex");
+    }
+    int perRing = 0;
+    while (perRing < n && info[static_cast<size_t>(perRing)].arcLength == info[0].arcLength) {
+        ++perRing;
+    }
+    if (perRing < 3 || (n - 1) % perRing != 0) {
+        refuse("nodes per ring = " + std::to_string(perRing) +
+               " does not divide numVertices - 1 = " + std::to_string(n - 1));
+    }
+    m_perRing = perRing;
+    m_numRings = (n - 1) / perRing;
+    m_apex = n - 1;
+    if (m_numRings < 2) {
+        refuse("rings = " + std::to_string(m_numRings) + ", at least 2 needed");
+    }
+    for (int i = 0; i < m_numRings; ++i) {
+        for (int j = 0; j < perRing; ++j) {
+            const auto& node = info[static_cast<size_t>(i * perRing + j)];
+            const double expected = 2.0 * std::numbers::pi * j / perRing;
+            if (node.arcLength != info[static_cast<size_t>(i * perRing)].arcLength ||
+                std::abs(node.angle - expected) > 1e-9) {
+                refuse("node " + std::to_string(i * perRing + j) + " is not node " + std::to_string(j) +
+                       " of ring " + std::to_string(i));
+            }
+        }
+    }
+    const auto rings = static_cast<size_t>(m_numRings);
+    m_ringArc.resize(rings);
+    for (size_t i = 0; i < rings; ++i) {
+        m_ringArc[i] = info[i * static_cast<size_t>(perRing)].arcLength;
+    }
+    m_centre.assign(rings, Eigen::Vector3d::Zero());
+    m_axis.assign(rings, Eigen::Vector3d::UnitZ());
+    m_basisU.assign(rings, Eigen::Vector3d::UnitX());
+    m_basisV.assign(rings, Eigen::Vector3d::UnitY());
+    m_planar.assign(rings * static_cast<size_t>(perRing), Eigen::Vector2d::Zero());
+    update(anatomy.physicsMesh.vertices);
+}
+
+double LumenTube::arcLength(const LumenStation& at) const
+{
+    if (at.beforeStart) {
+        return m_ringArc.front();
+    }
+    const auto ring = static_cast<size_t>(std::clamp(at.ring, 0, m_numRings - 1));
+    if (at.beyondEnd || ring + 1 >= m_ringArc.size()) {
+        return m_ringArc.back();
+    }
+    const double u = std::clamp(at.u, 0.0, 1.0);
+    return (1.0 - u) * m_ringArc[ring] + u * m_ringArc[ring + 1];
+}
+
+void LumenTube::update(const Eigen::Matrix3Xd& wall)
+{
+    const int p = m_perRing;
+    for (int i = 0; i < m_numRings; ++i) {
+        Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+        for (int j = 0; j < p; ++j) {
+            sum += wall.col(i * p + j);
+        }
+        m_centre[static_cast<size_t>(i)] = sum / p;
+    }
+    for (int i = 0; i < m_numRings; ++i) {
+        const int prev = std::max(i - 1, 0);
+        const int next = std::min(i + 1, m_numRings - 1);
+        Eigen::Vector3d a = m_centre[static_cast<size_t>(next)] - m_centre[static_cast<size_t>(prev)];
+        const double length = a.norm();
+        const auto k = static_cast<size_t>(i);
+        m_axis[k] = length > 0.0 ? Eigen::Vector3d(a / length) : m_axis[k];
+        Eigen::Vector3d radial = wall.col(i * p) - m_centre[k];
+        radial -= radial.dot(m_axis[k]) * m_axis[k];
+        const double r = radial.norm();
+        if (r > 0.0) {
+            m_basisU[k] = radial / r;
+        }
+        m_basisV[k] = m_axis[k].cross(m_basisU[k]);
+        for (int j = 0; j < p; ++j) {
+            const Eigen::Vector3d d = wall.col(i * p + j) - m_centre[k];
+            m_planar[k * static_cast<size_t>(p) + static_cast<size_t>(j)] = {d.dot(m_basisU[k]),
+                                                                             d.dot(m_basisV[k])};
+        }
+    }
+    m_endHeight = height(m_numRings - 1, wall.col(m_apex));
+}
+
+LumenStation LumenTube::locate(const Eigen::Vector3d& p, int start) const
+{
+    // The nearest point of the centre polyline within kWindow sections of
+    // `start`: near the start, so a point outside the wall is not taken for
+    // a neighbouring loop of the colon; nearest, so a point on the inner
+    // side of a bend, where the ring planes cross, is not misplaced.
+    constexpr int kWindow = 4;
+    const int lastSection = m_numRings - 2;
+    const int from = std::clamp(start, 0, lastSection);
+    LumenStation best;
+    double bestDistance = std::numeric_limits<double>::infinity();
+    for (int i = std::max(0, from - kWindow); i <= std::min(lastSection, from + kWindow); ++i) {
+        const Eigen::Vector3d& c0 = centre(i);
+        const Eigen::Vector3d d = centre(i + 1) - c0;
+        const double length2 = d.squaredNorm();
+        const double raw = length2 > 0.0 ? (p - c0).dot(d) / length2 : 0.0;
+        const double u = std::clamp(raw, 0.0, 1.0);
+        const double distance = (p - (c0 + u * d)).squaredNorm();
+        if (distance < bestDistance) {
+            bestDistance = distance;
+            best.ring = i;
+            best.u = u;
+        }
+    }
+    best.beforeStart = best.ring == 0 && height(0, p) < 0.0;
+    best.beyondEnd = best.ring == lastSection && height(lastSection + 1, p) >= 0.0;
+    return best;
+}
+
+void LumenTube::rayToRing(int ring, const Eigen::Vector3d& e, double& radius, int& edge,
+                          double& fraction) const
+{
+    const auto k = static_cast<size_t>(ring);
+    Eigen::Vector2d d(e.dot(m_basisU[k]), e.dot(m_basisV[k]));
+    const double norm = d.norm();
+    d = norm > 0.0 ? Eigen::Vector2d(d / norm) : Eigen::Vector2d(1.0, 0.0);
+    const int p = m_perRing;
+    const Eigen::Vector2d* q = &m_planar[k * static_cast<size_t>(p)];
+    // Start at the edge the angle points to (nodes sit at 2 pi j / P) and
+    // widen the search; the first edge the ray crosses is the wall.
+    const double angle = std::atan2(d.y(), d.x());
+    const int guess = static_cast<int>(std::floor(angle / (2.0 * std::numbers::pi) * p + p)) % p;
+    double best = -1.0;
+    for (int offset = 0; offset < p; ++offset) {
+        const int j = (guess + (offset % 2 == 0 ? offset / 2 : p - (offset + 1) / 2)) % p;
+        const Eigen::Vector2d& q0 = q[j];
+        const Eigen::Vector2d e01 = q[(j + 1) % p] - q0;
+        const double denom = cross2(d, e01);
+        if (std::abs(denom) < 1e-15) {
+            continue;
+        }
+        const double w = cross2(q0, d) / denom;
+        const double s = cross2(q0, e01) / denom;
+        if (w >= -1e-12 && w <= 1.0 + 1e-12 && s > 0.0 && (best < 0.0 || s < best)) {
+            best = s;
+            edge = j;
+            fraction = std::clamp(w, 0.0, 1.0);
+        }
+        if (offset >= 2 && best >= 0.0) {
+            break;  // the edges around the guess have been seen and one is hit: the wall
+        }
+    }
+    if (best < 0.0) {
+        // A ring folded through its own centre: take the nearest node's radius.
+        int nearest = 0;
+        for (int j = 1; j < p; ++j) {
+            if (q[j].dot(d) > q[nearest].dot(d)) {
+                nearest = j;
+            }
+        }
+        best = std::max(q[nearest].dot(d), 0.0);
+        edge = nearest;
+        fraction = 0.0;
+    }
+    radius = best;
+}
+
+LumenWallSample LumenTube::wallAt(const Eigen::Vector3d& p, const LumenStation& station) const
+{
+    const int i = station.ring;
+    const double u = station.u;
+    LumenWallSample w;
+    w.centre = (1.0 - u) * centre(i) + u * centre(i + 1);
+    Eigen::Vector3d a = (1.0 - u) * axis(i) + u * axis(i + 1);
+    const double an = a.norm();
+    w.axis = an > 0.0 ? Eigen::Vector3d(a / an) : axis(i);
+    Eigen::Vector3d rho = p - w.centre;
+    rho -= rho.dot(w.axis) * w.axis;
+    w.distance = rho.norm();
+    if (w.distance > 0.0) {
+        w.radial = rho / w.distance;
+    } else {
+        w.radial = m_basisU[static_cast<size_t>(i)];
+    }
+    double r0 = 0.0, r1 = 0.0, f0 = 0.0, f1 = 0.0;
+    int e0 = 0, e1 = 0;
+    rayToRing(i, w.radial, r0, e0, f0);
+    rayToRing(i + 1, w.radial, r1, e1, f1);
+    w.wallRadius = (1.0 - u) * r0 + u * r1;
+    w.nodes = {node(i, e0), node(i, e0 + 1), node(i + 1, e1), node(i + 1, e1 + 1)};
+    w.weights = {(1.0 - u) * (1.0 - f0), (1.0 - u) * f0, u * (1.0 - f1), u * f1};
+    return w;
+}
+
+Eigen::Vector3d LumenTube::centreAlong(const LumenStation& from, double distance) const
+{
+    int i = from.ring;
+    double u = from.u;
+    Eigen::Vector3d at = (1.0 - u) * centre(i) + u * centre(i + 1);
+    double left = std::abs(distance);
+    if (distance >= 0.0) {
+        while (left > 0.0) {
+            const Eigen::Vector3d next = centre(i + 1);
+            const double d = (next - at).norm();
+            if (d >= left || i + 1 >= m_numRings - 1) {
+                return d > 0.0 ? Eigen::Vector3d(at + std::min(left, d) / d * (next - at)) : at;
+            }
+            left -= d;
+            at = next;
+            ++i;
+        }
+    } else {
+        while (left > 0.0) {
+            const Eigen::Vector3d prev = centre(i);
+            const double d = (prev - at).norm();
+            if (d >= left || i == 0) {
+                return d > 0.0 ? Eigen::Vector3d(at + std::min(left, d) / d * (prev - at)) : at;
+            }
+            left -= d;
+            at = prev;
+            --i;
+        }
+    }
+    return at;
+}
+
+}  // namespace colonosim::contact

@@ -1,0 +1,135 @@
+// The lumen as a chain of rings (LumenTube) and the contact measured on it
+// (LumenContact), on the default procedural colon at rest.
+
+#include "simcore/contact/LumenContact.h"
+#include "../physics/TubeAnatomy.h"
+#include "simcore/geometry/ProceduralColon.h"
+#include "simcore/params/Parameter.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+namespace colonosim::contact {
+namespace {
+
+const geometry::ColonAnatomy& colon()
+{
+    static const geometry::ColonAnatomy anatomy =
+        geometry::buildProceduralColon(geometry::AnatomyParameters{});
+    return anatomy;
+}
+
+LumenTube restTube()
+{
+    LumenTube tube(colon());
+    tube.update(colon().physicsMesh.vertices);
+    return tube;
+}
+
+// Every ring centre lies in its own section, found by walking from the anus,
+// and the stations' arc lengths grow along the colon.
+TEST(LumenTube, RingCentresAreFoundInTheirSectionsInOrder)
+{
+    const LumenTube tube = restTube();
+    ASSERT_GT(tube.numRings(), 50);
+    double previous = -1.0;
+    int start = 0;
+    for (int ring = 1; ring + 1 < tube.numRings(); ++ring) {
+        const Eigen::Vector3d p = 0.5 * (tube.centre(ring) + tube.centre(ring + 1));
+        const LumenStation at = tube.locate(p, start);
+        EXPECT_EQ(at.ring, ring) << "midpoint of section " << ring;
+        EXPECT_GE(at.u, 0.0);
+        EXPECT_LE(at.u, 1.0);
+        const double s = tube.arcLength(at);
+        EXPECT_GT(s, previous) << "section " << ring;
+        previous = s;
+        start = at.ring;
+    }
+}
+
+// A point driven straight out through the wall at 0.5 m/s (0.5 mm per 1 ms
+// step) stays in its section or the next (ring planes meet on the inside of
+// a bend), its depth grows by the distance moved, and the normal keeps
+// pointing back towards the axis: the wall cannot be tunnelled, however far
+// the point goes.
+TEST(LumenContact, APointDrivenThroughTheWallIsPushedBackTheWayItCame)
+{
+    const LumenTube tube = restTube();
+    const int ring = 30;
+    const Eigen::Vector3d centre = 0.5 * (tube.centre(ring) + tube.centre(ring + 1));
+    const Eigen::Vector3d axis = tube.axis(ring);
+    Eigen::Vector3d out = axis.unitOrthogonal();
+    constexpr double kScopeRadius = 0.0065;  // m
+    const double step = 0.5e-3;              // m per loop step
+    int start = ring;
+    double lastDepth = -1.0;
+    // 37 mm out: 20 mm past the wall, far beyond what a step can push the
+    // scope in (on the axis itself the way out is undefined).
+    for (int k = 1; k < 75; ++k) {
+        const Eigen::Vector3d p = centre + (k * step) * out;
+        const LumenStation at = tube.locate(p, start);
+        ASSERT_LE(std::abs(at.ring - ring), 1) << "left its section at " << k * step * 1e3 << " mm";
+        const LumenWallSample w = tube.wallAt(p, at);
+        const double depth = w.distance + kScopeRadius - w.wallRadius;
+        if (k > 1) {
+            EXPECT_NEAR(depth - lastDepth, step, 0.2 * step) << "at " << k * step * 1e3 << " mm";
+        }
+        // The normal (-radial) is perpendicular to the section's interpolated
+        // axis, which turns with the bend (by up to the section's bend angle
+        // once the point counts in the next section): it points back the way in.
+        EXPECT_GT(w.radial.dot(out), 0.8) << "at " << k * step * 1e3 << " mm";
+        lastDepth = depth;
+        start = at.ring;
+    }
+    EXPECT_GT(lastDepth, 0.015) << "the point ended far outside the wall, and still knows it";
+}
+
+// LumenContact gives every scope node an entry: a shaft along the ring
+// centres from the anus is clear of the wall everywhere, and a tip pushed
+// 5 cm out through the wall has a positive depth and a normal back into the
+// lumen, with its wall point's weights summing to 1.
+TEST(LumenContact, AShaftOnTheAxisIsClearAndATipThroughTheWallIsPushedBack)
+{
+    LumenContact contact(colon(), ContactParameters{});
+    const LumenTube tube = restTube();
+    constexpr int kRings = 12;
+    const Eigen::Vector3d out = tube.axis(kRings).unitOrthogonal();
+    const double r = 0.0065;  // m
+    Eigen::Matrix3Xd scope(3, kRings + 2);
+    for (int ring = 0; ring <= kRings; ++ring) {
+        scope.col(ring) = tube.centre(ring) + 1e-3 * tube.axis(ring);  // just inside each section
+    }
+    scope.col(kRings + 1) = 0.5 * (tube.centre(kRings) + tube.centre(kRings + 1)) + 0.05 * out;
+    const Eigen::Matrix3Xd& wall = colon().physicsMesh.vertices;
+    const auto& result = contact.compute(scope, Eigen::Matrix3Xd::Zero(3, scope.cols()), r, wall,
+                                         Eigen::Matrix3Xd::Zero(3, wall.cols()));
+    ASSERT_EQ(result.size(), static_cast<size_t>(kRings + 2));
+    for (int i = 0; i <= kRings; ++i) {
+        EXPECT_LT(result[static_cast<size_t>(i)].depth, 0.0) << "node " << i;
+    }
+    const LumenNodeContact& tip = result.back();
+    EXPECT_EQ(tip.station.ring, kRings);
+    EXPECT_GT(tip.depth, 0.02);
+    EXPECT_LT(tip.normal.dot(out), -0.98);
+    double weights = 0.0;
+    for (const double w : tip.weights) {
+        weights += w;
+    }
+    EXPECT_NEAR(weights, 1.0, 1e-12);
+}
+
+// A mesh that is not a tube of rings closed by an apex is refused by name.
+TEST(LumenTube, RefusesAMeshWithoutAnApex)
+{
+    try {
+        LumenTube tube(physics::testing::makeTubeAnatomy({}));
+        ADD_FAILURE() << "a tube without an apex was accepted";
+    } catch (const params::ParameterError& e) {
+        EXPECT_NE(std::string(e.what()).find("physics mesh"), std::string::npos) << e.what();
+    }
+}
+
+}  // namespace
+}  // namespace colonosim::contact
