@@ -4,27 +4,44 @@
 
 namespace colonosim::contact {
 
+namespace {
+// Sections searched either side of the start. A node moves well under a
+// section (12.6 mm on the default colon) per loop step, so its own last
+// section and its neighbours suffice; consecutive nodes (20 mm apart) lie
+// up to about two sections apart on an unpleated colon.
+constexpr int kHistoryWindow = 1;
+constexpr int kNeighbourWindow = 4;
+}  // namespace
+
 LumenContact::LumenContact(const geometry::ColonAnatomy& anatomy, const ContactParameters& parameters)
     : m_parameters(parameters), m_tube(anatomy)
 {
     m_parameters.validate();
 }
 
-const std::vector<LumenNodeContact>& LumenContact::compute(const Eigen::Matrix3Xd& scope,
-                                                           const Eigen::Matrix3Xd& scopeVelocities,
-                                                           double radius, const Eigen::Matrix3Xd& wall,
-                                                           const Eigen::Matrix3Xd& wallVelocities)
+const std::vector<LumenNodeContact>&
+LumenContact::compute(const Eigen::Matrix3Xd& scope, const Eigen::Matrix3Xd& scopeVelocities, double radius,
+                      const Eigen::Matrix3Xd& wall, const Eigen::Matrix3Xd& wallVelocities, int addedAtBase)
 {
     m_tube.update(wall);
     const auto n = static_cast<size_t>(scope.cols());
+    // Each node's section at the last call, aligned from the tip.
+    m_previousRing.resize(m_contacts.size());
+    for (size_t j = 0; j < m_contacts.size(); ++j) {
+        m_previousRing[j] = m_contacts[j].station.ring;
+    }
+    const bool history = addedAtBase != kNoHistory;
     m_contacts.resize(n);
     const int lastRing = m_tube.numRings() - 1;
-    int start = 0;
+    int neighbour = 0;
     for (size_t i = 0; i < n; ++i) {
         const Eigen::Vector3d p = scope.col(static_cast<Eigen::Index>(i));
         LumenNodeContact& c = m_contacts[i];
-        c.station = m_tube.locate(p, start);
-        start = c.station.ring;
+        const long j = static_cast<long>(i) - (history ? addedAtBase : 0);
+        const bool known = history && j >= 0 && j < static_cast<long>(m_previousRing.size());
+        c.station = known ? m_tube.locate(p, m_previousRing[static_cast<size_t>(j)], kHistoryWindow)
+                          : m_tube.locate(p, neighbour, kNeighbourWindow);
+        neighbour = c.station.ring;
         const LumenWallSample w = m_tube.wallAt(p, c.station);
         c.depth = w.distance + radius - w.wallRadius;
         c.normal = -w.radial;

@@ -4,8 +4,8 @@
 /// its signed depth into the wall, the contact normal, the wall point's nodes
 /// and weights, and the slip velocity for friction.
 ///
-/// A scope node p of radius r at its station (found by walking from the
-/// previous node's section, the base node from the anus) lies at distance d
+/// A scope node p of radius r at its station (searched around its own
+/// station of the last step; see compute()) lies at distance d
 /// from the lumen axis, where the wall is at radius R along the same radial
 /// direction e:
 ///   depth = d + r - R    (> 0: pressed into the wall),  normal = -e
@@ -59,10 +59,21 @@ public:
     LumenContact(const geometry::ColonAnatomy& anatomy, const ContactParameters& parameters);
 
     /// One entry per scope node (3 x n positions and velocities, base to tip).
+    /// `addedAtBase`: nodes that entered at the base since the last call
+    /// (negative when nodes left; kNoHistory when the nodes are not the last
+    /// call's). With a history each node's station is searched around its own
+    /// station of the last call (a node moves a fraction of a millimetre per
+    /// step); a new node, or every node without a history, searches around
+    /// its base-side neighbour's (the base node around the anus). The
+    /// neighbour's station alone loses its way where the colon is pleated on
+    /// the shaft and consecutive nodes lie more than the search's four
+    /// sections apart.
     const std::vector<LumenNodeContact>& compute(const Eigen::Matrix3Xd& scope,
                                                  const Eigen::Matrix3Xd& scopeVelocities, double radius,
                                                  const Eigen::Matrix3Xd& wall,
-                                                 const Eigen::Matrix3Xd& wallVelocities);
+                                                 const Eigen::Matrix3Xd& wallVelocities,
+                                                 int addedAtBase = kNoHistory);
+    static constexpr int kNoHistory = -(1 << 30);
     [[nodiscard]] const std::vector<LumenNodeContact>& contacts() const { return m_contacts; }
     [[nodiscard]] const LumenTube& tube() const { return m_tube; }
     [[nodiscard]] const ContactParameters& parameters() const { return m_parameters; }
@@ -76,6 +87,7 @@ private:
     ContactParameters m_parameters;
     LumenTube m_tube;
     std::vector<LumenNodeContact> m_contacts;
+    std::vector<int> m_previousRing;  ///< each node's section at the last call
 };
 
 }  // namespace colonosim::contact

@@ -112,13 +112,13 @@ void LumenTube::update(const Eigen::Matrix3Xd& wall)
     m_endHeight = height(m_numRings - 1, wall.col(m_apex));
 }
 
-LumenStation LumenTube::locate(const Eigen::Vector3d& p, int start) const
+LumenStation LumenTube::locate(const Eigen::Vector3d& p, int start, int window) const
 {
-    // The nearest point of the centre polyline within kWindow sections of
+    // The nearest point of the centre polyline within `window` sections of
     // `start`: near the start, so a point outside the wall is not taken for
     // a neighbouring loop of the colon; nearest, so a point on the inner
     // side of a bend, where the ring planes cross, is not misplaced.
-    constexpr int kWindow = 4;
+    const int kWindow = std::max(0, window);
     const int lastSection = m_numRings - 2;
     const int from = std::clamp(start, 0, lastSection);
     LumenStation best;

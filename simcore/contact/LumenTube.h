@@ -12,8 +12,8 @@
 /// nodes in its own plane (basis: node 0's radial direction, and a_i x it).
 ///
 /// Station of a point p: the nearest point of the polyline of ring centres,
-/// section (i, i + 1) at fraction u in [0, 1], searched only within four
-/// sections of a nearby section (the neighbouring scope node's), never
+/// section (i, i + 1) at fraction u in [0, 1], searched only within a few
+/// sections of a nearby section (LumenContact.h says which), never
 /// globally: a point pushed outside the wall stays in its own part of the
 /// colon and is pushed back the way it came, so the lumen cannot be
 /// tunnelled into a neighbouring loop at any speed. (The nearest point and
@@ -79,8 +79,9 @@ public:
     {
         return (p - centre(ring)).dot(axis(ring));
     }
-    /// The section holding `p`, walking from section `start`.
-    [[nodiscard]] LumenStation locate(const Eigen::Vector3d& p, int start) const;
+    /// The section holding `p`: the nearest point of the centre polyline
+    /// within `window` sections of section `start`.
+    [[nodiscard]] LumenStation locate(const Eigen::Vector3d& p, int start, int window = 4) const;
     /// The wall seen from `p` at `station`, radially.
     [[nodiscard]] LumenWallSample wallAt(const Eigen::Vector3d& p, const LumenStation& station) const;
     /// Where a station lies along the colon at rest (material coordinate), m:

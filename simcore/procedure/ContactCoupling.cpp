@@ -177,7 +177,7 @@ void ContactCoupling::solve(const std::vector<contact::LumenNodeContact>& contac
 }
 
 void ContactCoupling::update(const std::vector<contact::LumenNodeContact>& contacts,
-                             const contact::LumenContact& law, const scope::DiscreteRod& rod, int addedAtBase,
+                             const scope::DiscreteRod& rod, int addedAtBase,
                              const Eigen::VectorXd& wallCompliance)
 {
     const int n = std::min(rod.numNodes(), static_cast<int>(contacts.size()));

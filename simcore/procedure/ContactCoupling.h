@@ -56,8 +56,8 @@ public:
     /// update). `addedAtBase` nodes entered the rod at the base since the last
     /// call (negative when nodes left); `wallCompliance` is dt^2 / m per wall
     /// node (0 for fixed nodes), m/N.
-    void update(const std::vector<contact::LumenNodeContact>& contacts, const contact::LumenContact& law,
-                const scope::DiscreteRod& rod, int addedAtBase, const Eigen::VectorXd& wallCompliance);
+    void update(const std::vector<contact::LumenNodeContact>& contacts, const scope::DiscreteRod& rod,
+                int addedAtBase, const Eigen::VectorXd& wallCompliance);
 
     /// The whole linearised contact problem of the step solved once
     /// (Gauss-Seidel on the rod's compliance); the rod's node forces become

@@ -81,11 +81,11 @@ void ProcedureLoop::applyContact()
     }
     const auto& contacts =
         m_contact.compute(m_scopeNow, m_scopeVelocity, 0.5 * m_settings.scope.outerDiameter,
-                          m_colon.body.positions(), m_colon.body.velocities());
+                          m_colon.body.positions(), m_colon.body.velocities(), static_cast<int>(shift));
     m_scope.clearLoads();
     m_scope.addGravity(m_settings.environment.gravity *
                        physics::downDirection(m_settings.environment.patientPosition));
-    m_coupling.update(contacts, m_contact, m_scope.rod(), static_cast<int>(shift), m_wallCompliance);
+    m_coupling.update(contacts, m_scope.rod(), static_cast<int>(shift), m_wallCompliance);
     m_coupling.solveAndApply(m_scope.rod());
     m_scope.step();
     m_coupling.finish(contacts, m_contact);

@@ -120,6 +120,41 @@ TEST(LumenContact, AShaftOnTheAxisIsClearAndATipThroughTheWallIsPushedBack)
     EXPECT_NEAR(weights, 1.0, 1e-12);
 }
 
+// Where the colon is pleated on the shaft, consecutive scope nodes can lie
+// more sections apart than the search around a neighbour reaches. A node
+// that slides 0.5 mm per step from section 3 to section 15 while its base-side
+// neighbour stays in section 2 is followed by its own history; searched only
+// around the neighbour it would be lost at section 6.
+TEST(LumenContact, ANodeIsFollowedFromItsOwnLastStationNotOnlyItsNeighbours)
+{
+    const LumenTube tube = restTube();
+    const Eigen::Matrix3Xd& wall = colon().physicsMesh.vertices;
+    const Eigen::Matrix3Xd still = Eigen::Matrix3Xd::Zero(3, wall.cols());
+    const auto midpoint = [&](int ring) {
+        return Eigen::Vector3d(0.5 * (tube.centre(ring) + tube.centre(ring + 1)));
+    };
+    Eigen::Matrix3Xd scope(3, 2);
+    scope.col(0) = midpoint(2);
+    scope.col(1) = midpoint(3);
+    LumenContact followed(colon(), ContactParameters{});
+    LumenContact searched(colon(), ContactParameters{});
+    const Eigen::Matrix3Xd velocities = Eigen::Matrix3Xd::Zero(3, 2);
+    for (int ring = 3; ring < 15; ++ring) {
+        const Eigen::Vector3d from = midpoint(ring);
+        const Eigen::Vector3d to = midpoint(ring + 1);
+        const int steps = static_cast<int>(std::ceil((to - from).norm() / 5e-4));
+        for (int k = 1; k <= steps; ++k) {
+            scope.col(1) = from + (to - from) * (static_cast<double>(k) / steps);
+            followed.compute(scope, velocities, 0.0065, wall, still, 0);
+            searched.compute(scope, velocities, 0.0065, wall, still);
+        }
+    }
+    EXPECT_EQ(followed.contacts()[1].station.ring, 15);
+    EXPECT_LT(followed.contacts()[1].depth, 0.0) << "inside the lumen";
+    EXPECT_EQ(searched.contacts()[1].station.ring, 6) << "the neighbour's search reaches four sections";
+    EXPECT_GT(searched.contacts()[1].depth, followed.contacts()[1].depth);
+}
+
 // A mesh that is not a tube of rings closed by an apex is refused by name.
 TEST(LumenTube, RefusesAMeshWithoutAnApex)
 {

@@ -103,7 +103,7 @@ TEST(ContactCoupling, DelassusMatrixIsTheRodsOwnCompliance)
     const int mid = tip / 2;
     const auto contacts = contactsOn(scope, {{mid, 1e-6}, {tip, 1e-6}});
     ContactCoupling coupling(kStiffness, 1.0, kLoopStep);
-    coupling.update(contacts, law(), scope.rod(), 0, kRigidWall);
+    coupling.update(contacts, scope.rod(), 0, kRigidWall);
     ASSERT_EQ(coupling.activeNodes().size(), 2U);
     const Eigen::MatrixXd g = coupling.delassus();
     const double f = 1e-4;  // N
@@ -128,7 +128,7 @@ TEST(ContactCoupling, OneContactIsResolvedInOneStep)
     const double depth = 2e-3;  // m
     const auto contacts = contactsOn(scope, {{tip, depth}});
     ContactCoupling coupling(kStiffness, 1.0, kLoopStep);
-    coupling.update(contacts, law(), scope.rod(), 0, kRigidWall);
+    coupling.update(contacts, scope.rod(), 0, kRigidWall);
     ASSERT_EQ(coupling.activeNodes().size(), 1U);
     coupling.solveAndApply(scope.rod());
     coupling.finish(contacts, law());
@@ -151,7 +151,7 @@ TEST(ContactCoupling, TheTrustRegionBoundsTheMotionOfOneStep)
     const auto contacts = contactsOn(scope, {{tip, 0.02}});
     const double maxStep = 1e-4;  // m
     ContactCoupling coupling(kStiffness, maxStep, kLoopStep);
-    coupling.update(contacts, law(), scope.rod(), 0, kRigidWall);
+    coupling.update(contacts, scope.rod(), 0, kRigidWall);
     coupling.solveAndApply(scope.rod());
     coupling.finish(contacts, law());
     const double g = coupling.delassus()(0, 0);
@@ -171,14 +171,14 @@ TEST(ContactCoupling, ReleaseIsImmediateAndContactNeverPulls)
     const int tip = scope.numInsertedNodes() - 1;
     const auto pressed = contactsOn(scope, {{tip, 1e-3}});
     ContactCoupling coupling(kStiffness, 1.0, kLoopStep);
-    coupling.update(pressed, law(), scope.rod(), 0, kRigidWall);
+    coupling.update(pressed, scope.rod(), 0, kRigidWall);
     coupling.solveAndApply(scope.rod());
     coupling.finish(pressed, law());
     ASSERT_GT(coupling.loads().col(tip).y(), 0.0);
     // The wall moves 5 mm away: the node still carries its load into the
     // update (it is active), and the solve releases it.
     const auto clear = contactsOn(scope, {{tip, -0.005}});
-    coupling.update(clear, law(), scope.rod(), 0, kRigidWall);
+    coupling.update(clear, scope.rod(), 0, kRigidWall);
     EXPECT_EQ(coupling.activeNodes().size(), 1U);
     coupling.solveAndApply(scope.rod());
     coupling.finish(clear, law());
@@ -196,10 +196,10 @@ TEST(ContactCoupling, TheWallsComplianceAddsInSeries)
     const int tip = scope.numInsertedNodes() - 1;
     const auto contacts = contactsOn(scope, {{tip, 1e-3}});
     ContactCoupling rigid(kStiffness, 1.0, kLoopStep);
-    rigid.update(contacts, law(), scope.rod(), 0, kRigidWall);
+    rigid.update(contacts, scope.rod(), 0, kRigidWall);
     const Eigen::VectorXd soft = Eigen::VectorXd::Constant(1, 2e-3);  // m/N: a 0.5 g node at 1 ms
     ContactCoupling compliant(kStiffness, 1.0, kLoopStep);
-    compliant.update(contacts, law(), scope.rod(), 0, soft);
+    compliant.update(contacts, scope.rod(), 0, soft);
     EXPECT_NEAR(compliant.delassus()(0, 0) - rigid.delassus()(0, 0), 2e-3, 1e-12);
     rigid.solveAndApply(scope.rod());
     rigid.finish(contacts, law());
