@@ -9,9 +9,55 @@
 
 namespace colonosim::procedure {
 
+namespace {
+
+/// rad: the furthest the scripted hands turn either dial (short of the
+/// scope's stops, as a person leaves a margin on the wheel).
+constexpr double kDialStop = 2.5;
+/// rad: the furthest the up/down dial is turned; it reaches further than
+/// the left/right one (180 against 160 degrees on the scope), which is why
+/// experts steer with up/down and shaft torque.
+constexpr double kUpDownStop = 3.0;
+/// 1/s: rate at which shaft torque hands a left/right deflection over to the
+/// up/down dial (torque steering: turn the shaft, keep the tip's bend where
+/// it points, and let the up/down wheel hold it).
+constexpr double kTorqueSteering = 1.0;
+/// rad: a dial this close to kDialStop counts as at its stop (the hand
+/// feels the wheel stiffen).
+constexpr double kNearStop = 0.05;
+/// s a dial stays at its stop without the scope getting on before the
+/// expert changes approach (a moment's look, not a fight).
+constexpr double kBlockedFor = 1.5;
+/// m fed within kBlockedFor that still counts as getting on.
+constexpr double kBlockedFeed = 0.005;
+/// m withdrawn to straighten the sigmoid and give the bending section room
+/// before re-aiming ("pull back and re-approach").
+constexpr double kPullBackLength = 0.04;
+/// 1/s: rate at which the dials are let go while pulling back, so the tip
+/// unhooks from the bend and is aimed afresh on the way in.
+constexpr double kUnhookRate = 1.0;
+/// rad: the expert withdraws only once the dials are let go below this, so
+/// a hooked tip does not drag the wall (straighten the tip, then pull).
+constexpr double kUnhooked = 1.0;
+/// pull-backs tried at one bend before sliding by it.
+constexpr int kPullBacksPerBend = 1;
+/// m the tip must have gone past a bend for the next block to count as a
+/// new bend (and its pull-backs to start again).
+constexpr double kNewBend = 0.05;
+/// m/s: the slow feed of a slide-by, the tip deflected towards the lumen
+/// gliding along the wall (a third of the expert's usual pace).
+constexpr double kSlideSpeed = 0.01;
+/// N: a slide-by feeds only below this handle force (an expert slides
+/// by with a light touch, well under the back-off limit).
+constexpr double kSlideForce = 3.0;
+/// m fed in one slide-by before giving up on it and pulling back again.
+constexpr double kSlideLength = 0.06;
+
+}  // namespace
+
 OperatorStyle expertStyle()
 {
-    return {0.03, 0.01, 8.0, true, 2.0, 0.5, true};
+    return {0.03, 0.01, 8.0, true, 2.0, 0.5, true, 0.1};
 }
 
 OperatorStyle noviceStyle()
@@ -23,7 +69,11 @@ InputSample ScriptedOperator::next(const ProcedureLoop& loop)
 {
     const double dt = loop.trace().loopStep;
     const ProcedureFrame& frame = loop.lastFrame();
-    const double force = loop.outputs().handleForce;
+    const double raw = loop.outputs().handleForce;
+    m_feltForce = m_style.feelTime > 0.0
+                      ? m_feltForce + std::min(1.0, dt / m_style.feelTime) * (raw - m_feltForce)
+                      : raw;
+    const double force = m_feltForce;
     const double maxInsertion = loop.scope().parameters().workingLength - 0.05;
 
     // The lumen as the camera sees it: the deformed lumen's centre 4 cm
@@ -43,13 +93,26 @@ InputSample ScriptedOperator::next(const ProcedureLoop& loop)
         double left = std::atan2(inCamera.x(), std::abs(inCamera.z()) + 1e-3);
         const double follow = std::min(1.0, m_style.steeringGain * dt);
         if (m_style.aimsBeforeInserting) {
-            if (m_phase != Phase::Insert) {
+            if (m_phase != Phase::Insert && m_phase != Phase::SlideBy) {
                 up = 0.0;
                 left = 0.0;
             }
             // Turn the dials while the lumen is off centre and hold them where it is centred.
-            m_input.dialUpDown = std::clamp(m_input.dialUpDown + follow * up, -2.5, 2.5);
-            m_input.dialLeftRight = std::clamp(m_input.dialLeftRight + follow * left, -2.5, 2.5);
+            m_input.dialUpDown = std::clamp(m_input.dialUpDown + follow * up, -kUpDownStop, kUpDownStop);
+            m_input.dialLeftRight = std::clamp(m_input.dialLeftRight + follow * left, -kDialStop, kDialStop);
+            if (m_phase == Phase::Insert || m_phase == Phase::SlideBy) {
+                // Torque steering: turn the shaft by dTurn and counter-turn the
+                // deflection in the tip's frame, so the bend keeps pointing
+                // where it does while it moves onto the up/down dial.
+                const double turn = -kTorqueSteering * m_input.dialLeftRight * dt;
+                const double c = std::cos(turn);
+                const double s = std::sin(turn);
+                const double lr = c * m_input.dialLeftRight + s * m_input.dialUpDown;
+                const double ud = -s * m_input.dialLeftRight + c * m_input.dialUpDown;
+                m_input.rotation += turn;
+                m_input.dialLeftRight = std::clamp(lr, -kDialStop, kDialStop);
+                m_input.dialUpDown = std::clamp(ud, -kUpDownStop, kUpDownStop);
+            }
             m_offCentre = std::hypot(up, left);
         } else {
             m_input.dialUpDown += follow * (std::clamp(up, -1.0, 1.0) - m_input.dialUpDown);
@@ -80,23 +143,82 @@ InputSample ScriptedOperator::next(const ProcedureLoop& loop)
         }
     }
 
+    const bool looped = loop.loops().current() != LoopKind::None;
+    const bool backOff = force > m_style.forceLimit || (m_style.reducesLoops && looped);
     switch (m_phase) {
     case Phase::Insert: {
-        const bool looped = loop.loops().current() != LoopKind::None;
-        if (force > m_style.forceLimit || (m_style.reducesLoops && looped)) {
+        // Blocked: a dial at its stop and the scope hardly fed since (the
+        // lumen keeps slipping off centre).
+        const bool atStop = std::abs(m_input.dialUpDown) >= kUpDownStop - kNearStop ||
+                            std::abs(m_input.dialLeftRight) >= kDialStop - kNearStop;
+        if (!m_style.aimsBeforeInserting || !atStop) {
+            m_blockedSince = -1.0;
+        } else if (m_blockedSince < 0.0 || m_input.insertion > m_blockedAt + kBlockedFeed) {
+            m_blockedSince = loop.time();
+            m_blockedAt = m_input.insertion;
+        }
+        if (backOff) {
             m_phase = Phase::ReduceLoop;
             m_reduceUntil = std::max(0.0, m_input.insertion - 0.03);
         } else if (frame.tipArcLength >= colon.length() - 0.03 || m_input.insertion >= maxInsertion) {
             m_phase = Phase::Withdraw;
+        } else if (m_blockedSince >= 0.0 && loop.time() - m_blockedSince >= kBlockedFor) {
+            // Pull back and re-approach; after kPullBacksPerBend of those at
+            // the same bend, slide by it.
+            if (m_bendArc < 0.0 || frame.tipArcLength > m_bendArc + kNewBend) {
+                m_pullBacks = 0;
+                m_bendArc = frame.tipArcLength;
+            }
+            m_blockedSince = -1.0;
+            if (m_pullBacks < kPullBacksPerBend) {
+                ++m_pullBacks;
+                m_phase = Phase::PullBack;
+                m_reduceUntil = std::max(0.0, m_input.insertion - kPullBackLength);
+            } else {
+                m_phase = Phase::SlideBy;
+                m_slideUntil = std::min(m_input.insertion + kSlideLength, maxInsertion);
+            }
         } else if (!m_style.aimsBeforeInserting || m_offCentre < kAimedWithin) {
             m_input.insertion = std::min(m_input.insertion + m_style.insertSpeed * dt, maxInsertion);
         }
         break;
     }
+    case Phase::PullBack:
+        // Let the dials go and withdraw: the sigmoid straightens and the tip
+        // unhooks; it is aimed again on the way in.
+        m_input.dialUpDown *= 1.0 - kUnhookRate * dt;
+        m_input.dialLeftRight *= 1.0 - kUnhookRate * dt;
+        if (std::max(std::abs(m_input.dialUpDown), std::abs(m_input.dialLeftRight)) > kUnhooked) {
+            break;  // unhook the tip before pulling
+        }
+        m_input.insertion = std::max(m_input.insertion - 0.5 * m_style.insertSpeed * dt, 0.0);
+        if (m_input.insertion <= m_reduceUntil) {
+            m_phase = Phase::Insert;
+        }
+        break;
+    case Phase::SlideBy:
+        // Advance slowly with a light touch, the tip deflected towards the
+        // lumen, until the lumen comes back to the centre of the view.
+        if (backOff) {
+            m_phase = Phase::ReduceLoop;
+            m_reduceUntil = std::max(0.0, m_input.insertion - 0.03);
+        } else if (m_offCentre < kAimedWithin) {
+            m_phase = Phase::Insert;
+        } else if (m_input.insertion >= m_slideUntil) {
+            m_pullBacks = 0;  // start the round again: pull back, re-aim, slide
+            m_phase = Phase::PullBack;
+            m_reduceUntil = std::max(0.0, m_input.insertion - kPullBackLength);
+        } else if (force < kSlideForce) {
+            m_input.insertion = std::min(m_input.insertion + kSlideSpeed * dt, maxInsertion);
+        }
+        break;
     case Phase::ReduceLoop:
         if (m_style.aimsBeforeInserting) {
             m_input.dialUpDown *= 1.0 - 2.0 * dt;  // ease the dials back while backing off
             m_input.dialLeftRight *= 1.0 - 2.0 * dt;
+            if (std::max(std::abs(m_input.dialUpDown), std::abs(m_input.dialLeftRight)) > kUnhooked) {
+                break;  // unhook the tip before pulling
+            }
         }
         // Withdraw with clockwise torque (clockwise seen from the operator: negative rotation).
         m_input.insertion = std::max(m_input.insertion - 0.5 * m_style.insertSpeed * dt, 0.0);

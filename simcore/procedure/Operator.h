@@ -4,9 +4,16 @@
 /// act only through the InputSample a person's hands produce, and see only
 /// what a person would: the handle force, the tip's view of the lumen, and
 /// the loop warning signs (a tip that stops moving with the shaft).
-///   Expert: inserts at 3 cm/s steering the tip towards the lumen; when the
-///     handle force exceeds 8 N or the shaft stores a loop, withdraws 3 cm
-///     with clockwise torque (the standard loop reduction) before going on;
+///   Expert: inserts at 3 cm/s steering the tip towards the lumen with the
+///     dials, handing left/right deflection over to the up/down dial by
+///     shaft torque (torque steering), and feeds only while the lumen is
+///     centred; when the handle force it feels (smoothed over 0.1 s)
+///     exceeds 8 N or the shaft stores a loop, straightens the tip and
+///     withdraws 3 cm with clockwise torque (the standard loop reduction)
+///     before going on; when a dial is at its stop and the scope no longer
+///     gets on, pulls back 4 cm and re-approaches, and if that fails at the
+///     same bend slides by it (1 cm/s under 3 N, tip deflected towards the
+///     lumen, up to 6 cm) before pulling back again;
 ///     from the cecum withdraws slowly (1 cm/s), sweeping the tip; marks a
 ///     lesion that has stayed in view for 0.5 s.
 ///   Novice: pushes at 6 cm/s through resistance, backs off only above
@@ -44,6 +51,10 @@ struct OperatorStyle {
     /// kAimedWithin of the view's centre (the expert); otherwise the dials
     /// follow the offset and the feed never waits (the novice).
     bool aimsBeforeInserting = false;
+    /// s: time constant of the handle force as the hand feels it (the expert
+    /// reacts to a push that lasts, not to a millisecond's jolt of the
+    /// contact); 0: reacts to the instantaneous force (the novice).
+    double feelTime = 0.0;
 };
 
 /// Angular offset of the lumen from the view's centre within which an
@@ -60,12 +71,21 @@ public:
     [[nodiscard]] bool finished() const override { return m_finished; }
 
 private:
-    enum class Phase { Insert, ReduceLoop, Withdraw };
+    /// Insert: aim, then feed. ReduceLoop: back off with clockwise torque.
+    /// PullBack / SlideBy: the expert's ways past a bend the dials cannot
+    /// aim through (see Operator.cpp). Withdraw: from the cecum out.
+    enum class Phase { Insert, ReduceLoop, PullBack, SlideBy, Withdraw };
     OperatorStyle m_style;
     Phase m_phase = Phase::Insert;
+    double m_feltForce = 0.0;  ///< the handle force as the hand feels it (smoothed), N
     double m_offCentre = 0.0;  ///< the lumen's angular offset in the view, rad
     InputSample m_input;
-    double m_reduceUntil = 0.0;  ///< insertion at which a loop reduction ends, m
+    double m_reduceUntil = 0.0;    ///< insertion at which a loop reduction (or a pull-back) ends, m
+    double m_blockedSince = -1.0;  ///< s: since when a dial is at its stop with no headway; < 0: not
+    double m_blockedAt = 0.0;      ///< insertion then, m
+    int m_pullBacks = 0;           ///< pull-backs tried at the present bend
+    double m_bendArc = -1.0;       ///< where along the colon the tip was blocked, m
+    double m_slideUntil = 0.0;     ///< insertion at which a slide-by gives up, m
     bool m_finished = false;
     std::array<double, 32> m_inViewSince{};  ///< s, per lesion; negative while out of view
     std::uint32_t m_marked = 0;              ///< lesions already marked
