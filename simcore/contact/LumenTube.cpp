@@ -118,12 +118,12 @@ LumenStation LumenTube::locate(const Eigen::Vector3d& p, int start, int window) 
     // `start`: near the start, so a point outside the wall is not taken for
     // a neighbouring loop of the colon; nearest, so a point on the inner
     // side of a bend, where the ring planes cross, is not misplaced.
-    const int kWindow = std::max(0, window);
+    const int reach = std::max(0, window);
     const int lastSection = m_numRings - 2;
     const int from = std::clamp(start, 0, lastSection);
     LumenStation best;
     double bestDistance = std::numeric_limits<double>::infinity();
-    for (int i = std::max(0, from - kWindow); i <= std::min(lastSection, from + kWindow); ++i) {
+    for (int i = std::max(0, from - reach); i <= std::min(lastSection, from + reach); ++i) {
         const Eigen::Vector3d& c0 = centre(i);
         const Eigen::Vector3d d = centre(i + 1) - c0;
         const double length2 = d.squaredNorm();

@@ -52,6 +52,8 @@ constexpr double kSlideSpeed = 0.01;
 constexpr double kSlideForce = 3.0;
 /// m fed in one slide-by before giving up on it and pulling back again.
 constexpr double kSlideLength = 0.06;
+/// m withdrawn in one loop reduction (the standard 3 cm back-off).
+constexpr double kReduceLength = 0.03;
 
 }  // namespace
 
@@ -158,8 +160,7 @@ InputSample ScriptedOperator::next(const ProcedureLoop& loop)
             m_blockedAt = m_input.insertion;
         }
         if (backOff) {
-            m_phase = Phase::ReduceLoop;
-            m_reduceUntil = std::max(0.0, m_input.insertion - 0.03);
+            backOffBy(Phase::ReduceLoop, kReduceLength);
         } else if (frame.tipArcLength >= colon.length() - 0.03 || m_input.insertion >= maxInsertion) {
             m_phase = Phase::Withdraw;
         } else if (m_blockedSince >= 0.0 && loop.time() - m_blockedSince >= kBlockedFor) {
@@ -172,8 +173,7 @@ InputSample ScriptedOperator::next(const ProcedureLoop& loop)
             m_blockedSince = -1.0;
             if (m_pullBacks < kPullBacksPerBend) {
                 ++m_pullBacks;
-                m_phase = Phase::PullBack;
-                m_reduceUntil = std::max(0.0, m_input.insertion - kPullBackLength);
+                backOffBy(Phase::PullBack, kPullBackLength);
             } else {
                 m_phase = Phase::SlideBy;
                 m_slideUntil = std::min(m_input.insertion + kSlideLength, maxInsertion);
@@ -186,9 +186,7 @@ InputSample ScriptedOperator::next(const ProcedureLoop& loop)
     case Phase::PullBack:
         // Let the dials go and withdraw: the sigmoid straightens and the tip
         // unhooks; it is aimed again on the way in.
-        m_input.dialUpDown *= 1.0 - kUnhookRate * dt;
-        m_input.dialLeftRight *= 1.0 - kUnhookRate * dt;
-        if (std::max(std::abs(m_input.dialUpDown), std::abs(m_input.dialLeftRight)) > kUnhooked) {
+        if (!letDialsGo(kUnhookRate * dt)) {
             break;  // unhook the tip before pulling
         }
         m_input.insertion = std::max(m_input.insertion - 0.5 * m_style.insertSpeed * dt, 0.0);
@@ -200,25 +198,20 @@ InputSample ScriptedOperator::next(const ProcedureLoop& loop)
         // Advance slowly with a light touch, the tip deflected towards the
         // lumen, until the lumen comes back to the centre of the view.
         if (backOff) {
-            m_phase = Phase::ReduceLoop;
-            m_reduceUntil = std::max(0.0, m_input.insertion - 0.03);
+            backOffBy(Phase::ReduceLoop, kReduceLength);
         } else if (m_offCentre < kAimedWithin) {
             m_phase = Phase::Insert;
         } else if (m_input.insertion >= m_slideUntil) {
             m_pullBacks = 0;  // start the round again: pull back, re-aim, slide
-            m_phase = Phase::PullBack;
-            m_reduceUntil = std::max(0.0, m_input.insertion - kPullBackLength);
+            backOffBy(Phase::PullBack, kPullBackLength);
         } else if (force < kSlideForce) {
             m_input.insertion = std::min(m_input.insertion + kSlideSpeed * dt, maxInsertion);
         }
         break;
     case Phase::ReduceLoop:
-        if (m_style.aimsBeforeInserting) {
-            m_input.dialUpDown *= 1.0 - 2.0 * dt;  // ease the dials back while backing off
-            m_input.dialLeftRight *= 1.0 - 2.0 * dt;
-            if (std::max(std::abs(m_input.dialUpDown), std::abs(m_input.dialLeftRight)) > kUnhooked) {
-                break;  // unhook the tip before pulling
-            }
+        // Ease the dials back while backing off, and unhook the tip before pulling.
+        if (m_style.aimsBeforeInserting && !letDialsGo(2.0 * dt)) {
+            break;
         }
         // Withdraw with clockwise torque (clockwise seen from the operator: negative rotation).
         m_input.insertion = std::max(m_input.insertion - 0.5 * m_style.insertSpeed * dt, 0.0);
@@ -236,6 +229,19 @@ InputSample ScriptedOperator::next(const ProcedureLoop& loop)
         break;
     }
     return m_input;
+}
+
+void ScriptedOperator::backOffBy(Phase phase, double length)
+{
+    m_phase = phase;
+    m_reduceUntil = std::max(0.0, m_input.insertion - length);
+}
+
+bool ScriptedOperator::letDialsGo(double fraction)
+{
+    m_input.dialUpDown *= 1.0 - fraction;
+    m_input.dialLeftRight *= 1.0 - fraction;
+    return std::max(std::abs(m_input.dialUpDown), std::abs(m_input.dialLeftRight)) <= kUnhooked;
 }
 
 InputSample ReplayOperator::next(const ProcedureLoop& /*loop*/)

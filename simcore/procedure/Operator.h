@@ -75,6 +75,11 @@ private:
     /// PullBack / SlideBy: the expert's ways past a bend the dials cannot
     /// aim through (see Operator.cpp). Withdraw: from the cecum out.
     enum class Phase { Insert, ReduceLoop, PullBack, SlideBy, Withdraw };
+    /// Enters `phase` (ReduceLoop or PullBack), withdrawing `length` metres.
+    void backOffBy(Phase phase, double length);
+    /// Relaxes both dials by `fraction` of their deflection; true once the
+    /// tip is unhooked (both dials under kUnhooked).
+    bool letDialsGo(double fraction);
     OperatorStyle m_style;
     Phase m_phase = Phase::Insert;
     double m_feltForce = 0.0;  ///< the handle force as the hand feels it (smoothed), N

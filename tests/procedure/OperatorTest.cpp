@@ -3,7 +3,7 @@
 // (the dial at its stop, the lumen still off centre) and never fed again:
 // the tip stayed at or before 0.478 m along the colon for the whole 60 s.
 // With torque steering and its ways past a bend it cannot aim through
-// (pull back and re-approach, slide by), it gets further along: 0.568 m
+// (pull back and re-approach, slide by), it gets further along: 0.668 m
 // within 25 s when this was written (the descending colon starts at 0.55 m).
 
 #include "simcore/procedure/Operator.h"
