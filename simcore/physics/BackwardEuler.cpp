@@ -24,14 +24,41 @@ double dotMasked(const std::vector<int>& nodes, const Eigen::Matrix3Xd& a, const
 }
 }  // namespace
 
+void BackwardEuler::linearize(TissueBody& body, double h)
+{
+    m_frozen.clear();
+    m_unfrozen.clear();
+    for (const auto& term : body.forceTerms()) {
+        if (term->hasSymmetricJacobian()) {
+            (term->linearize(body.positions(), h) ? m_frozen : m_unfrozen).push_back(term.get());
+        }
+    }
+}
+
 void BackwardEuler::applySystem(const TissueBody& body, double h, const Eigen::Matrix3Xd& y,
                                 Eigen::Matrix3Xd& out)
 {
-    body.stiffnessProduct(body.positions(), y, m_kTmp, true);
-    body.dampingProduct(body.positions(), y, m_dTmp);
+    // (h D + h^2 K+) y: the frozen terms in one pass each, the others as
+    // separate stiffness and damping products at x.
+    m_kTmp.setZero();
+    for (const ForceTerm* term : m_frozen) {
+        term->addSystemProduct(y, m_kTmp);
+    }
+    if (!m_unfrozen.empty()) {
+        m_dTmp.setZero();
+        for (const ForceTerm* term : m_unfrozen) {
+            term->addDefiniteStiffnessProduct(body.positions(), y, m_dTmp);
+        }
+        m_kTmp += (h * h) * m_dTmp;
+        m_dTmp.setZero();
+        for (const ForceTerm* term : m_unfrozen) {
+            term->addDampingProduct(body.positions(), y, m_dTmp);
+        }
+        m_kTmp += h * m_dTmp;
+    }
     const Eigen::VectorXd& mass = body.masses();
     for (const int i : body.integratedNodes()) {
-        out.col(i) = mass[i] * y.col(i) - h * m_dTmp.col(i) - h * h * m_kTmp.col(i);
+        out.col(i) = mass[i] * y.col(i) - m_kTmp.col(i);
     }
 }
 
@@ -69,6 +96,7 @@ void BackwardEuler::step(TissueBody& body, double h)
     }
 
     // Preconditioned conjugate gradients on the integrated nodes.
+    linearize(body, h);
     zeroOutside(mask, m_dv);
     applySystem(body, h, m_dv, m_ap);
     for (const int i : nodes) {

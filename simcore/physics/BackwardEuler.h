@@ -24,6 +24,10 @@ public:
     [[nodiscard]] double lastResidual() const { return m_lastResidual; }
 
 private:
+    /// Sorts the symmetric terms into those that froze their system at the
+    /// body's positions for step h and those that did not.
+    void linearize(TissueBody& body, double h);
+    /// out = (M - h D - h^2 K+) y on the integrated nodes.
     void applySystem(const TissueBody& body, double h, const Eigen::Matrix3Xd& y, Eigen::Matrix3Xd& out);
 
     /// Relative CG residual: 1e-6 keeps the solve error far below the
@@ -36,6 +40,8 @@ private:
     Eigen::Matrix3Xd m_rhs, m_dv, m_r, m_z, m_p, m_ap, m_kTmp, m_dTmp;
     Eigen::VectorXd m_precond, m_kRow, m_cRow;
     std::vector<std::uint8_t> m_mask;
+    std::vector<ForceTerm*> m_frozen;    ///< terms that add h D + h^2 K+ in one pass
+    std::vector<ForceTerm*> m_unfrozen;  ///< symmetric terms multiplied by K+ and D separately
 };
 
 }  // namespace colonosim::physics

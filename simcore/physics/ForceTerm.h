@@ -52,6 +52,25 @@ public:
     /// df += D(x) dv with D = d(damping force)/dv.
     virtual void addDampingProduct(const Positions& x, const Eigen::Matrix3Xd& dv,
                                    Eigen::Matrix3Xd& df) const = 0;
+    /// Freezes the implicit solve's linear system at x for a step of h:
+    /// returns true if the term then adds (h D + h^2 K+) y in
+    /// addSystemProduct, from what it kept of x (each conjugate-gradient
+    /// iteration multiplies by it at the same x). False by default: the solver
+    /// multiplies by K+ and D separately.
+    virtual bool linearize(const Positions& x, double h)
+    {
+        (void)x;
+        (void)h;
+        return false;
+    }
+    /// out += (h D + h^2 K+) y at the x and h of the last linearize() that
+    /// returned true (the sign convention above: both products negative
+    /// semi-definite).
+    virtual void addSystemProduct(const Eigen::Matrix3Xd& y, Eigen::Matrix3Xd& out) const
+    {
+        (void)y;
+        (void)out;
+    }
     /// kRow(i) += sum over j of ||K_ij|| at state x, or at the worst state
     /// the term declares where that is tighter to state (a stiffening
     /// mesentery at its declared maximum stretch); cRow(i) likewise for D.

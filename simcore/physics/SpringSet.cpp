@@ -173,6 +173,44 @@ void SpringSet::addDampingProduct(const Positions& x, const Eigen::Matrix3Xd& dv
     }
 }
 
+bool SpringSet::linearize(const Positions& x, double h)
+{
+    // h D_e + h^2 K+_e = h^2 k t I + (h^2 k (1 - t) + h c) u u^T, with the
+    // transverse factor t = max(1 - L/l, 0) of the definite stiffness.
+    m_linear.resize(m_active.size());
+    for (size_t a = 0; a < m_active.size(); ++a) {
+        const auto e = static_cast<size_t>(m_active[a]);
+        LinearBlock& block = m_linear[a];
+        block.i = m_i[e];
+        block.j = m_j[e];
+        const Eigen::Vector3d d = x.col(m_j[e]) - x.col(m_i[e]);
+        const double l = d.norm();
+        if (l < kMinLength) {
+            block = {m_i[e], m_j[e], 0.0, 0.0, 0.0, 0.0, 0.0};
+            continue;
+        }
+        const Eigen::Vector3d u = d / l;
+        const double transverse = std::max(1.0 - m_rest[e] / l, 0.0);
+        block.ux = u.x();
+        block.uy = u.y();
+        block.uz = u.z();
+        block.along = h * h * m_k[e] * transverse;
+        block.across = h * h * m_k[e] * (1.0 - transverse) + h * m_c[e];
+    }
+    return true;
+}
+
+void SpringSet::addSystemProduct(const Eigen::Matrix3Xd& y, Eigen::Matrix3Xd& out) const
+{
+    for (const LinearBlock& block : m_linear) {
+        const Eigen::Vector3d u(block.ux, block.uy, block.uz);
+        const Eigen::Vector3d r = y.col(block.j) - y.col(block.i);
+        const Eigen::Vector3d g = block.along * r + (block.across * u.dot(r)) * u;
+        out.col(block.i) += g;
+        out.col(block.j) -= g;
+    }
+}
+
 void SpringSet::addStiffnessBound(const Positions& x, Eigen::VectorXd& kRow, Eigen::VectorXd& cRow) const
 {
     // ||K_e|| = k max(1, |1 - L/l|) at the current length l. A spring

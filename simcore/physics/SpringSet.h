@@ -52,6 +52,8 @@ public:
                                      Eigen::Matrix3Xd& df) const override;
     void addDampingProduct(const Positions& x, const Eigen::Matrix3Xd& dv,
                            Eigen::Matrix3Xd& df) const override;
+    bool linearize(const Positions& x, double h) override;
+    void addSystemProduct(const Eigen::Matrix3Xd& y, Eigen::Matrix3Xd& out) const override;
     void addStiffnessBound(const Positions& x, Eigen::VectorXd& kRow, Eigen::VectorXd& cRow) const override;
     [[nodiscard]] double potentialEnergy(const Positions& x) const override;
     void onActiveSetChanged(const std::vector<std::uint8_t>& awake) override;
@@ -69,6 +71,14 @@ private:
     std::vector<SpringFamily> m_family;
     std::vector<int> m_active;  ///< springs with at least one awake node
     std::vector<std::uint8_t> m_awake;
+    /// One active spring of the frozen system: its block of h D + h^2 K+ is
+    /// along I + across u u^T (see linearize).
+    struct LinearBlock {
+        int i, j;
+        double ux, uy, uz;
+        double along, across;
+    };
+    std::vector<LinearBlock> m_linear;
 };
 
 }  // namespace colonosim::physics

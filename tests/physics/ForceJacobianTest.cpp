@@ -240,6 +240,46 @@ TEST(SpringSet, StiffnessBoundCoversTheBlockNorm)
     EXPECT_DOUBLE_EQ(cRow[1], 2.0) << "two evaluations of 2c";
 }
 
+TEST(SpringSet, FrozenSystemProductEqualsTheSeparateProducts)
+{
+    // The implicit solve's frozen system (h D + h^2 K+) y must equal the two
+    // products it replaces, stretched and compressed springs alike (a
+    // compressed spring loses its transverse term in K+), also after the
+    // active set changed.
+    const Positions rest = restPositions();
+    SpringSet springs;
+    springs.add(0, 1, 0.8 * (rest.col(1) - rest.col(0)).norm(), 120.0, 0.3);
+    springs.add(0, 2, 1.3 * (rest.col(2) - rest.col(0)).norm(), 150.0, 0.2);
+    springs.add(1, 3, 0.9 * (rest.col(3) - rest.col(1)).norm(), 80.0, 0.1);
+    springs.add(3, 4, 1.6 * (rest.col(4) - rest.col(3)).norm(), 60.0, 0.0);
+    std::mt19937 random(5);
+    std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+    const double h = 1e-3;
+    for (const std::vector<std::uint8_t>& awake :
+         {std::vector<std::uint8_t>{1, 1, 1, 1, 1}, std::vector<std::uint8_t>{0, 0, 1, 0, 1}}) {
+        springs.onActiveSetChanged(awake);
+        Positions x = rest;
+        Eigen::Matrix3Xd y(3, x.cols());
+        for (Eigen::Index i = 0; i < x.size(); ++i) {
+            x.data()[i] += 1e-3 * uniform(random);
+            y.data()[i] = uniform(random);
+        }
+        Eigen::Matrix3Xd stiffness = Eigen::Matrix3Xd::Zero(3, x.cols());
+        Eigen::Matrix3Xd damping = Eigen::Matrix3Xd::Zero(3, x.cols());
+        springs.addDefiniteStiffnessProduct(x, y, stiffness);
+        springs.addDampingProduct(x, y, damping);
+        const Eigen::Matrix3Xd expected = h * damping + h * h * stiffness;
+        ASSERT_TRUE(springs.linearize(x, h));
+        Eigen::Matrix3Xd frozen = Eigen::Matrix3Xd::Zero(3, x.cols());
+        springs.addSystemProduct(y, frozen);
+        ASSERT_GT(expected.cwiseAbs().maxCoeff(), 0.0);
+        EXPECT_LT((frozen - expected).cwiseAbs().maxCoeff(), 1e-12 * expected.cwiseAbs().maxCoeff())
+            << "expected\n"
+            << expected << "\nfrozen\n"
+            << frozen;
+    }
+}
+
 TEST(SpringSet, RemoveKeepsTheOtherSprings)
 {
     SpringSet springs;
