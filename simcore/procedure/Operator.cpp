@@ -54,6 +54,11 @@ constexpr double kSlideForce = 3.0;
 constexpr double kSlideLength = 0.06;
 /// m withdrawn in one loop reduction (the standard 3 cm back-off).
 constexpr double kReduceLength = 0.03;
+/// m withdrawn at most in one loop reduction while the loop persists.
+constexpr double kReduceAtMost = 0.15;
+/// insertion advance over tip advance above which the tip no longer follows
+/// the shaft (the clinical warning sign of a loop: not 1:1).
+constexpr double kTipLags = 2.0;
 
 }  // namespace
 
@@ -91,8 +96,14 @@ InputSample ScriptedOperator::next(const ProcedureLoop& loop)
     if (inCamera.norm() > 1e-6 && m_phase != Phase::Withdraw) {
         // Turn the dials towards the lumen, following its angular offset with
         // a first-order lag (the operator's reaction), within +-1 rad.
-        double up = std::atan2(inCamera.y(), std::abs(inCamera.z()) + 1e-3);
-        double left = std::atan2(inCamera.x(), std::abs(inCamera.z()) + 1e-3);
+        // The angle between the view's axis and the lumen (0 ahead, pi
+        // behind the tip), split along the direction the lumen lies in: a
+        // lumen behind a folded-back tip needs more bend, not a mirror of the
+        // bend it has.
+        const double aside = std::hypot(inCamera.x(), inCamera.y());
+        const double angle = std::atan2(aside, inCamera.z());
+        double up = aside > 1e-9 ? angle * inCamera.y() / aside : 0.0;
+        double left = aside > 1e-9 ? angle * inCamera.x() / aside : 0.0;
         const double follow = std::min(1.0, m_style.steeringGain * dt);
         if (m_style.aimsBeforeInserting) {
             if (m_phase != Phase::Insert && m_phase != Phase::SlideBy) {
@@ -145,7 +156,11 @@ InputSample ScriptedOperator::next(const ProcedureLoop& loop)
         }
     }
 
-    const bool looped = loop.loops().current() != LoopKind::None;
+    // A loop is reduced once the tip stops following the shaft (the
+    // clinical warning sign); while the tip still advances the expert goes
+    // on and reduces the loop from further in, where the tip holds.
+    const bool looped =
+        loop.loops().current() != LoopKind::None && loop.loops().signals().tipAdvanceRatio > kTipLags;
     const bool backOff = force > m_style.forceLimit || (m_style.reducesLoops && looped);
     switch (m_phase) {
     case Phase::Insert: {
@@ -218,7 +233,8 @@ InputSample ScriptedOperator::next(const ProcedureLoop& loop)
         if (m_style.reducesLoops) {
             m_input.rotation -= 0.5 * dt;
         }
-        if (m_input.insertion <= m_reduceUntil) {
+        if (m_input.insertion <= m_reduceUntil &&
+            (loop.loops().current() == LoopKind::None || m_input.insertion <= m_reduceFloor)) {
             m_phase = Phase::Insert;
         }
         break;
@@ -235,6 +251,7 @@ void ScriptedOperator::backOffBy(Phase phase, double length)
 {
     m_phase = phase;
     m_reduceUntil = std::max(0.0, m_input.insertion - length);
+    m_reduceFloor = std::max(0.0, m_input.insertion - kReduceAtMost);
 }
 
 bool ScriptedOperator::letDialsGo(double fraction)

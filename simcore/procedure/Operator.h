@@ -8,9 +8,13 @@
 ///     dials, handing left/right deflection over to the up/down dial by
 ///     shaft torque (torque steering), and feeds only while the lumen is
 ///     centred; when the handle force it feels (smoothed over 0.1 s)
-///     exceeds 8 N or the shaft stores a loop, straightens the tip and
-///     withdraws 3 cm with clockwise torque (the standard loop reduction)
-///     before going on; when a dial is at its stop and the scope no longer
+///     exceeds 8 N, or the shaft stores a loop and the tip has stopped
+///     following it (insertion over tip advance above 2, the clinical
+///     warning sign; a loop the tip still advances through is let be),
+///     straightens the tip and withdraws with clockwise torque (the standard
+///     loop reduction) 3 cm and on until the loop is out, 15 cm at most,
+///     before going on; aims a lumen that lies behind the folded tip by more
+///     bend towards it; when a dial is at its stop and the scope no longer
 ///     gets on, pulls back 4 cm and re-approaches, and if that fails at the
 ///     same bend slides by it (1 cm/s under 3 N, tip deflected towards the
 ///     lumen, up to 6 cm) before pulling back again;
@@ -86,6 +90,7 @@ private:
     double m_offCentre = 0.0;  ///< the lumen's angular offset in the view, rad
     InputSample m_input;
     double m_reduceUntil = 0.0;    ///< insertion at which a loop reduction (or a pull-back) ends, m
+    double m_reduceFloor = 0.0;    ///< insertion at which a loop reduction ends even with the loop there, m
     double m_blockedSince = -1.0;  ///< s: since when a dial is at its stop with no headway; < 0: not
     double m_blockedAt = 0.0;      ///< insertion then, m
     int m_pullBacks = 0;           ///< pull-backs tried at the present bend
