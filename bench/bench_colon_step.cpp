@@ -8,6 +8,7 @@
 #include "bench/report/BenchScene.h"
 #include "bench/report/StepRate.h"
 #include "simcore/physics/ActiveRegion.h"
+#include "simcore/physics/BackwardEuler.h"
 #include "simcore/physics/TissueSimulation.h"
 
 #include <benchmark/benchmark.h>
@@ -37,6 +38,8 @@ void BM_ColonStep(benchmark::State& state)
     // non-finite numbers.
     constexpr long kRestart = 2000;
     long count = 0;
+    long cgIterations = 0;
+    auto* implicit = dynamic_cast<colonosim::physics::BackwardEuler*>(integrator.get());
     for (auto _ : state) {
         if (++count % kRestart == 0) {
             state.PauseTiming();
@@ -46,12 +49,17 @@ void BM_ColonStep(benchmark::State& state)
         }
         integrator->step(colon.body, h);
         benchmark::ClobberMemory();
+        cgIterations += implicit != nullptr ? implicit->lastIterations() : 0;
     }
     state.SetItemsProcessed(state.iterations());
     state.SetLabel(std::string(colonosim::physics::integratorName(kind)));
     state.counters["nodes"] = static_cast<double>(colon.body.numNodes());
     state.counters["step_us"] = h * 1e6;
     state.counters["finite"] = colon.body.positions().allFinite() ? 1.0 : 0.0;
+    if (implicit != nullptr) {
+        state.counters["cg_per_step"] =
+            static_cast<double>(cgIterations) / static_cast<double>(std::max<long>(1, count));
+    }
 }
 BENCHMARK(BM_ColonStep)
     ->Arg(static_cast<int>(IntegratorKind::ExplicitEuler))

@@ -2,13 +2,23 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace colonosim::physics {
 
 namespace {
 constexpr size_t kMaxStoredDiagnostics = 100;
-}
+/// Loop steps accepted at the first try after which a finer step that a
+/// rejection imposed is relaxed by half (1 s at the 1 kHz loop): a passing
+/// jolt, not the model, made the step fail.
+constexpr long kRelaxAfter = 1000;
+/// A retry at half the step whose offending speed is within this factor of
+/// the first try's did not change it: the step resolves that motion (an
+/// impulsive load), it is no instability of the step, and the finer step is
+/// not kept.
+constexpr double kSameSpeed = 1.1;
+}  // namespace
 
 TissueSimulation::TissueSimulation(TissueBody& body, const SteppingPolicy& policy)
     : m_body(body), m_policy(policy)
@@ -100,6 +110,7 @@ bool TissueSimulation::checkState(StepDiagnostic& diagnostic) const
         const double speed2 = v.col(i).squaredNorm();
         if (!x.col(i).allFinite() || !std::isfinite(speed2)) {
             diagnostic.node = i;
+            diagnostic.speed = std::numeric_limits<double>::infinity();
             diagnostic.message = "node " + std::to_string(i) + " has a non-finite position or velocity";
             return false;
         }
@@ -108,6 +119,7 @@ bool TissueSimulation::checkState(StepDiagnostic& diagnostic) const
             out << "node " << i << " speed " << std::sqrt(speed2) << " m/s exceeds maxNodeSpeed "
                 << m_policy.maxNodeSpeed << " m/s";
             diagnostic.node = i;
+            diagnostic.speed = std::sqrt(speed2);
             diagnostic.message = out.str();
             return false;
         }
@@ -129,6 +141,7 @@ bool TissueSimulation::runSubsteps(int substeps)
         return true;
     }
     ++m_rejectedSteps;
+    m_rejectedSpeed = diagnostic.speed;
     if (m_rejections.size() < kMaxStoredDiagnostics) {
         diagnostic.time = m_time;
         std::ostringstream out;
@@ -148,11 +161,23 @@ bool TissueSimulation::advance()
     m_savedV = m_body.velocities();
     bool accepted = runSubsteps(m_substeps);
     if (!accepted) {
-        // Keep the finer step from now on and re-derive the plan from the
-        // current state; past the budget this switches to backward Euler.
+        // Keep the finer step and re-derive the plan from the current state;
+        // past the budget this switches to backward Euler.
+        const int minimumBefore = m_minimumSubsteps;
+        const double firstSpeed = m_rejectedSpeed;
         m_minimumSubsteps = 2 * m_substeps;
+        m_goodSinceRejection = 0;
         replan();
         accepted = runSubsteps(m_substeps);
+        if (!accepted && std::isfinite(firstSpeed) && m_rejectedSpeed < kSameSpeed * firstSpeed &&
+            m_rejectedSpeed > firstSpeed / kSameSpeed) {
+            m_minimumSubsteps = minimumBefore;  // halving the step changed nothing
+            replan();
+        }
+    } else if (m_minimumSubsteps > 1 && ++m_goodSinceRejection >= kRelaxAfter) {
+        m_minimumSubsteps = std::max(1, m_minimumSubsteps / 2);
+        m_goodSinceRejection = 0;
+        replan();
     } else if (++m_stepsSincePlan >= m_policy.replanInterval) {
         refreshPlan();
     }

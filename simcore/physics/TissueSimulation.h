@@ -12,9 +12,12 @@
 /// declared limit). A failing step is rejected: the last good state is kept,
 /// a diagnostic names the node, the value and the limit, and the step is
 /// retried once with twice the substeps, and the plan is re-derived from the
-/// current state. The bound is also re-evaluated at the current state every
-/// replanInterval loop steps (large deformation changes the stiffness).
-/// advance() never throws.
+/// current state. The finer step is kept, but not for good: after 1 s of
+/// steps accepted at the first try it is relaxed by half; and when the retry
+/// fails on the same speed (within 10%), halving the step did not change the
+/// motion (an impulsive load, not an unstable step) and it is not kept. The bound is also re-evaluated at the
+/// current state every replanInterval loop steps (large deformation changes the stiffness). advance() never
+/// throws.
 
 #include "simcore/params/Parameter.h"
 #include "simcore/physics/ActiveRegion.h"
@@ -64,6 +67,7 @@ struct SteppingPolicy {
 struct StepDiagnostic {
     double time = 0.0;  ///< s, start of the rejected loop step
     int node = -1;
+    double speed = 0.0;  ///< m/s of that node (infinite when not finite)
     std::string message;
 };
 
@@ -115,7 +119,9 @@ private:
     std::vector<StepDiagnostic> m_rejections;
     long m_rejectedSteps = 0;
     long m_stepsSincePlan = 0;
-    int m_minimumSubsteps = 1;  ///< raised after a rejection
+    int m_minimumSubsteps = 1;      ///< raised after a rejection, halved again after kRelaxAfter good steps
+    long m_goodSinceRejection = 0;  ///< loop steps accepted at the first try since the last rejection
+    double m_rejectedSpeed = 0.0;   ///< m/s of the offending node in the last rejected try
 };
 
 }  // namespace colonosim::physics

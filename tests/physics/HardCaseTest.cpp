@@ -177,6 +177,45 @@ TEST(HardCases, RejectedStepKeepsTheLastGoodStateWithADiagnostic)
     EXPECT_TRUE(simulation.advance()) << "the loop goes on once the bad input is gone";
 }
 
+TEST(HardCases, AFinerStepForcedByARejectionIsRelaxedAfterASecondOfGoodSteps)
+{
+    ColonBody colon = makeTubeColon();
+    TissueSimulation simulation(colon.body, SteppingPolicy{});
+    simulation.advance();
+    const int planned = simulation.substeps();
+    colon.body.applyExternalForce(33, Eigen::Vector3d(std::nan(""), 0.0, 0.0));
+    EXPECT_FALSE(simulation.advance());
+    colon.body.clearExternalForces();
+    EXPECT_GT(simulation.substeps(), planned) << "a step that blew up is retried and kept finer";
+    for (int s = 0; s < 999; ++s) {
+        ASSERT_TRUE(simulation.advance());
+    }
+    EXPECT_GT(simulation.substeps(), planned) << "kept for one second";
+    ASSERT_TRUE(simulation.advance());
+    EXPECT_EQ(simulation.substeps(), planned) << simulation.planNote();
+}
+
+TEST(HardCases, ARejectionThatAFinerStepDoesNotChangeKeepsThePlan)
+{
+    // A jolt on one node drives it past maxNodeSpeed whatever the step: the
+    // speed is the load's, resolved alike at both step sizes, not an
+    // instability, so the plan is not made finer.
+    ColonBody colon = makeTubeColon();
+    TissueSimulation simulation(colon.body, SteppingPolicy{});
+    simulation.advance();
+    const int planned = simulation.substeps();
+    colon.body.applyExternalForce(33, Eigen::Vector3d(0.0, 0.0, 500.0));
+    EXPECT_FALSE(simulation.advance());
+    colon.body.clearExternalForces();
+    ASSERT_EQ(simulation.rejections().size(), 2U);
+    EXPECT_NEAR(simulation.rejections()[1].speed, simulation.rejections()[0].speed,
+                0.1 * simulation.rejections()[0].speed)
+        << simulation.rejections()[0].message << "\n"
+        << simulation.rejections()[1].message;
+    EXPECT_EQ(simulation.substeps(), planned) << simulation.planNote();
+    EXPECT_TRUE(simulation.advance());
+}
+
 TEST(HardCases, EveryCornerOfTheDeclaredRangesIsStableAtTheLoopRate)
 {
     // The stiffest, lightest and least damped corners of the declared ranges.

@@ -132,16 +132,22 @@ TEST(ProcedureLoop, FullDialsWhileJammedStayStable)
     ProcedureLoop loop(defaultColon(), ProcedureSettings{});
     InputSample input;
     RunSummary summary;
+    int engaged = 0;  // loop steps in which the tissue's step check rejected a try
     for (int s = 0; s < 3000; ++s) {
         input.insertion = std::min(0.25, 0.1 * s / 1000.0);  // pushes on past the curve at 10 cm/s
         input.dialUpDown = 3.5;                              // beyond the clinical limit: clamped
         input.dialLeftRight = s < 1500 ? 3.5 : -3.5;
         input.rotation = 2.0 * s / 3000.0;  // and twists
+        const long triesBefore = loop.tissue().rejectedSteps();
         loop.step(input);
+        engaged += loop.tissue().rejectedSteps() > triesBefore ? 1 : 0;
         observe(loop, summary);
     }
     EXPECT_TRUE(summary.finite);
-    EXPECT_LT(loop.tissue().rejectedSteps(), 30);
+    // A loop step is tried at most twice: count the steps the check engaged in.
+    RecordProperty("rejected_tries", std::to_string(loop.tissue().rejectedSteps()));
+    RecordProperty("engaged_steps", std::to_string(engaged));
+    EXPECT_LT(engaged, 30) << loop.tissue().rejectedSteps() << " tries rejected";
     for (const auto& r : loop.tissue().rejections()) {
         EXPECT_NE(r.message.find("rejected"), std::string::npos);
     }
