@@ -127,7 +127,7 @@ bool TissueSimulation::checkState(StepDiagnostic& diagnostic) const
     return true;
 }
 
-bool TissueSimulation::runSubsteps(int substeps)
+bool TissueSimulation::runSubsteps(int substeps, double& rejectedSpeed)
 {
     const double h = m_policy.loopStep / substeps;
     for (int s = 0; s < substeps; ++s) {
@@ -141,7 +141,7 @@ bool TissueSimulation::runSubsteps(int substeps)
         return true;
     }
     ++m_rejectedSteps;
-    m_rejectedSpeed = diagnostic.speed;
+    rejectedSpeed = diagnostic.speed;
     if (m_rejections.size() < kMaxStoredDiagnostics) {
         diagnostic.time = m_time;
         std::ostringstream out;
@@ -159,18 +159,19 @@ bool TissueSimulation::advance()
 {
     m_savedX = m_body.positions();
     m_savedV = m_body.velocities();
-    bool accepted = runSubsteps(m_substeps);
+    double firstSpeed = 0.0;  // m/s of the node that failed each try
+    double retrySpeed = 0.0;
+    bool accepted = runSubsteps(m_substeps, firstSpeed);
     if (!accepted) {
         // Keep the finer step and re-derive the plan from the current state;
         // past the budget this switches to backward Euler.
         const int minimumBefore = m_minimumSubsteps;
-        const double firstSpeed = m_rejectedSpeed;
         m_minimumSubsteps = 2 * m_substeps;
         m_goodSinceRejection = 0;
         replan();
-        accepted = runSubsteps(m_substeps);
-        if (!accepted && std::isfinite(firstSpeed) && m_rejectedSpeed < kSameSpeed * firstSpeed &&
-            m_rejectedSpeed > firstSpeed / kSameSpeed) {
+        accepted = runSubsteps(m_substeps, retrySpeed);
+        if (!accepted && std::isfinite(firstSpeed) && retrySpeed < kSameSpeed * firstSpeed &&
+            retrySpeed > firstSpeed / kSameSpeed) {
             m_minimumSubsteps = minimumBefore;  // halving the step changed nothing
             replan();
         }

@@ -15,9 +15,9 @@
 /// current state. The finer step is kept, but not for good: after 1 s of
 /// steps accepted at the first try it is relaxed by half; and when the retry
 /// fails on the same speed (within 10%), halving the step did not change the
-/// motion (an impulsive load, not an unstable step) and it is not kept. The bound is also re-evaluated at the
-/// current state every replanInterval loop steps (large deformation changes the stiffness). advance() never
-/// throws.
+/// motion (an impulsive load, not an unstable step) and it is not kept. The
+/// bound is also re-evaluated at the current state every replanInterval loop
+/// steps (large deformation changes the stiffness). advance() never throws.
 
 #include "simcore/params/Parameter.h"
 #include "simcore/physics/ActiveRegion.h"
@@ -101,7 +101,9 @@ private:
     /// Periodic: re-estimates, re-derives the plan only if the estimate moved.
     void refreshPlan();
     void derivePlan(const StabilityEstimate& estimate);
-    bool runSubsteps(int substeps);
+    /// One loop step in `substeps`; false when the state check rejected it,
+    /// with the offending node's speed in `rejectedSpeed` (m/s).
+    bool runSubsteps(int substeps, double& rejectedSpeed);
     bool checkState(StepDiagnostic& diagnostic) const;
 
     TissueBody& m_body;
@@ -121,7 +123,6 @@ private:
     long m_stepsSincePlan = 0;
     int m_minimumSubsteps = 1;      ///< raised after a rejection, halved again after kRelaxAfter good steps
     long m_goodSinceRejection = 0;  ///< loop steps accepted at the first try since the last rejection
-    double m_rejectedSpeed = 0.0;   ///< m/s of the offending node in the last rejected try
 };
 
 }  // namespace colonosim::physics
