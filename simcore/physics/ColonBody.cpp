@@ -3,6 +3,7 @@
 #include "simcore/geometry/CentrelineSampling.h"
 
 #include "simcore/physics/Gravity.h"
+#include "simcore/physics/LumenSelfContact.h"
 #include "simcore/physics/OrganConstraint.h"
 #include "simcore/physics/ViscousDrag.h"
 
@@ -57,7 +58,8 @@ ColonBody buildColonBody(const ColonAnatomy& anatomy, const TissueParameters& ti
     }
 
     const Eigen::VectorXd mass = wallNodeMasses(mesh, tissue);
-    ColonBody colon{TissueBody(mesh.vertices, mass), nullptr, nullptr, nullptr, nullptr, nullptr, {}};
+    ColonBody colon{
+        TissueBody(mesh.vertices, mass), nullptr, nullptr, nullptr, nullptr, nullptr, nullptr, {}};
     TissueBody& body = colon.body;
 
     auto springs = std::make_unique<SpringSet>("wall");
@@ -118,6 +120,18 @@ ColonBody buildColonBody(const ColonAnatomy& anatomy, const TissueParameters& ti
     if (options.withInsufflation) {
         colon.insufflation = static_cast<InsufflationPressure*>(&body.addForceTerm(
             std::make_unique<InsufflationPressure>(mesh.triangles, environment.insufflationPressure)));
+    }
+    if (tissue.selfContactStiffness > 0.0) {
+        std::vector<double> arcs(static_cast<size_t>(n));
+        for (size_t i = 0; i < arcs.size(); ++i) {
+            arcs[i] = anatomy.physicsNodes[i].arcLength;
+        }
+        std::vector<LumenSelfContact::Ring> rings = lumenRings(mesh.vertices, arcs);
+        if (rings.size() >= 2) {
+            colon.selfContact =
+                static_cast<LumenSelfContact*>(&body.addForceTerm(std::make_unique<LumenSelfContact>(
+                    std::move(rings), tissue.selfContactStiffness, mesh.vertices)));
+        }
     }
     if (options.withOrgans && !anatomy.organs.empty()) {
         body.addConstraint(std::make_unique<OrganConstraint>(anatomy.organs));

@@ -22,6 +22,7 @@
 #include "simcore/geometry/ColonAnatomy.h"
 #include "simcore/physics/AnchorSprings.h"
 #include "simcore/physics/InsufflationPressure.h"
+#include "simcore/physics/LumenSelfContact.h"
 #include "simcore/physics/Mesentery.h"
 #include "simcore/physics/SpringSet.h"
 #include "simcore/physics/TissueBody.h"
@@ -45,6 +46,7 @@ struct ColonBody {
     AnchorSprings* retroperitoneal = nullptr;
     AnchorSprings* adhesions = nullptr;
     InsufflationPressure* insufflation = nullptr;
+    LumenSelfContact* selfContact = nullptr;  ///< null when the mesh has no rings or k = 0
     /// Spring-connected neighbours of each node (for the active region).
     std::vector<std::vector<int>> neighbours;
 };

@@ -3,7 +3,8 @@
 /// Static equilibrium f(x) = 0 of a tissue body by a quasi-Newton method:
 /// each iteration solves (-K+) dx = f(x) by Jacobi-preconditioned conjugate
 /// gradients over the integrated nodes, then x += dx (step halved while the
-/// residual grows). K+ is the definite stiffness of the symmetric terms, so
+/// residual grows; when 20 halvings do not lower it the solve stops there,
+/// stalled, at the best state found). K+ is the definite stiffness of the symmetric terms, so
 /// where springs are compressed, tethers slack or insufflation loads the wall
 /// (its Jacobian is left out) convergence is linear rather than quadratic:
 /// about 80 iterations to 1e-9 N on a 480-node tube. Damping plays no part
@@ -17,6 +18,7 @@ struct StaticResult {
     bool converged = false;
     int iterations = 0;
     double residual = 0.0;  ///< largest nodal force norm at the end, N
+    bool stalled = false;   ///< stopped because no step along the Newton direction lowered the residual
 };
 
 /// Stops when every integrated node's net force is below `forceTolerance` (N).

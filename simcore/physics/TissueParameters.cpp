@@ -6,7 +6,7 @@ namespace colonosim::physics {
 
 namespace {
 using T = TissueParameters;
-constexpr std::array<Field<T>, 13> kTissueFields{{
+constexpr std::array<Field<T>, 14> kTissueFields{{
     {&T::youngModulusSpec, &T::wallYoungModulus},
     {&T::thicknessSpec, &T::wallThickness},
     {&T::densitySpec, &T::wallDensity},
@@ -20,6 +20,7 @@ constexpr std::array<Field<T>, 13> kTissueFields{{
     {&T::retroperitonealSpec, &T::retroperitonealStiffness},
     {&T::adhesionSpec, &T::adhesionStiffness},
     {&T::surroundingDampingSpec, &T::surroundingDampingRate},
+    {&T::selfContactSpec, &T::selfContactStiffness},
 }};
 using E = EnvironmentParameters;
 constexpr std::array<Field<E>, 2> kEnvironmentFields{{

@@ -115,6 +115,17 @@ struct TissueParameters {
         "alpha in f = -alpha m v: drag of the surrounding viscera on the wall",
         "assumption: damps the ~1-3 Hz pendulum modes of the colon on its mesentery within about 0.2 s"};
 
+    static constexpr ParameterSpec selfContactSpec{
+        "selfContactStiffness",
+        "N/m",
+        2000.0,
+        0.0,
+        20000.0,
+        "k in f = k delta between two parts of the colon whose lumens overlap by delta (LumenSelfContact.h); "
+        "0 lets them pass into each other",
+        "assumption: the 10 N handle force exceeded only 5% of the time (Appleyard et al., Gastrointest "
+        "Endosc 2000), passed on to a fold, presses its limbs 5 mm into each other"};
+
     double wallYoungModulus = youngModulusSpec.defaultValue;
     double wallThickness = thicknessSpec.defaultValue;
     double wallDensity = densitySpec.defaultValue;
@@ -128,6 +139,7 @@ struct TissueParameters {
     double retroperitonealStiffness = retroperitonealSpec.defaultValue;
     double adhesionStiffness = adhesionSpec.defaultValue;
     double surroundingDampingRate = surroundingDampingSpec.defaultValue;
+    double selfContactStiffness = selfContactSpec.defaultValue;
 
     [[nodiscard]] static std::span<const Field<TissueParameters>> fields();
     void validate() const;

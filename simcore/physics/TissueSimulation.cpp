@@ -150,9 +150,13 @@ bool TissueSimulation::runSubsteps(int substeps, double& rejectedSpeed)
         diagnostic.message = out.str();
         m_rejections.push_back(diagnostic);
     }
+    return false;
+}
+
+void TissueSimulation::restoreSaved()
+{
     m_body.positions() = m_savedX;
     m_body.velocities() = m_savedV;
-    return false;
 }
 
 bool TissueSimulation::advance()
@@ -165,6 +169,7 @@ bool TissueSimulation::advance()
     if (!accepted) {
         // Keep the finer step and re-derive the plan from the current state;
         // past the budget this switches to backward Euler.
+        restoreSaved();
         const int minimumBefore = m_minimumSubsteps;
         m_minimumSubsteps = 2 * m_substeps;
         m_goodSinceRejection = 0;
@@ -172,8 +177,16 @@ bool TissueSimulation::advance()
         accepted = runSubsteps(m_substeps, retrySpeed);
         if (!accepted && std::isfinite(firstSpeed) && retrySpeed < kSameSpeed * firstSpeed &&
             retrySpeed > firstSpeed / kSameSpeed) {
-            m_minimumSubsteps = minimumBefore;  // halving the step changed nothing
+            // Halving the step changed nothing: the step resolves that motion
+            // (an impulsive load), it is no instability. Keep the plan and
+            // the retried state: rejecting it froze the colon for good under
+            // a load that stays (a scope jammed at full dials, 1.358 s into
+            // ProcedureLoop.FullDialsWhileJammedStayStable).
+            m_minimumSubsteps = minimumBefore;
             replan();
+            accepted = true;
+        } else if (!accepted) {
+            restoreSaved();
         }
     } else if (m_minimumSubsteps > 1 && ++m_goodSinceRejection >= kRelaxAfter) {
         m_minimumSubsteps = std::max(1, m_minimumSubsteps / 2);

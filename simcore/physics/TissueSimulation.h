@@ -102,9 +102,11 @@ private:
     void refreshPlan();
     void derivePlan(const StabilityEstimate& estimate);
     /// One loop step in `substeps`; false when the state check rejected it,
-    /// with the offending node's speed in `rejectedSpeed` (m/s).
+    /// with the offending node's speed in `rejectedSpeed` (m/s); the body is
+    /// left as the try ended (restoreSaved() puts the step's start back).
     bool runSubsteps(int substeps, double& rejectedSpeed);
     bool checkState(StepDiagnostic& diagnostic) const;
+    void restoreSaved();
 
     TissueBody& m_body;
     SteppingPolicy m_policy;

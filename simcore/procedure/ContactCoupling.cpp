@@ -90,7 +90,7 @@ void ContactCoupling::addWallCompliance(const std::vector<contact::LumenNodeCont
                                         const Eigen::VectorXd& wallCompliance)
 {
     // Shared wall compliance of (a, b): sum over common wall nodes k of
-    // w_ak w_bk dt^2 / m_k. Contacts are ordered along the scope, hence
+    // w_ak w_bk dt^2 / (2 m_k). Contacts are ordered along the scope, hence
     // along the lumen: only those within a ring of each other can share nodes.
     const auto m = m_active.size();
     m_wall.assign(m * m, 0.0);

@@ -54,7 +54,7 @@ public:
     /// Updates the node loads from `contacts` (one per inserted node, measured
     /// on the current scope shape, which carries the loads of the previous
     /// update). `addedAtBase` nodes entered the rod at the base since the last
-    /// call (negative when nodes left); `wallCompliance` is dt^2 / m per wall
+    /// call (negative when nodes left); `wallCompliance` is dt^2 / (2 m) per wall
     /// node (0 for fixed nodes), m/N.
     void update(const std::vector<contact::LumenNodeContact>& contacts, const scope::DiscreteRod& rod,
                 int addedAtBase, const Eigen::VectorXd& wallCompliance);

@@ -118,7 +118,7 @@ private:
     std::unique_ptr<physics::ActiveRegion> m_region;
     scope::Colonoscope m_scope;
     contact::LumenContact m_contact;
-    Eigen::VectorXd m_wallCompliance;  ///< dt^2 / m per wall node (0 fixed), m/N
+    Eigen::VectorXd m_wallCompliance;  ///< dt^2 / (2 m) per wall node (0 fixed), m/N
     ContactCoupling m_coupling;
     std::vector<double> m_nodeArcs;  ///< each scope node's place along the colon (lumen station), m
     LoopDetector m_loops;

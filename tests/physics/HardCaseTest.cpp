@@ -195,17 +195,23 @@ TEST(HardCases, AFinerStepForcedByARejectionIsRelaxedAfterASecondOfGoodSteps)
     EXPECT_EQ(simulation.substeps(), planned) << simulation.planNote();
 }
 
-TEST(HardCases, ARejectionThatAFinerStepDoesNotChangeKeepsThePlan)
+TEST(HardCases, ARejectionThatAFinerStepDoesNotChangeKeepsThePlanAndTheRetriedState)
 {
     // A jolt on one node drives it past maxNodeSpeed whatever the step: the
     // speed is the load's, resolved alike at both step sizes, not an
-    // instability, so the plan is not made finer.
+    // instability, so the plan is not made finer and the retried state is
+    // taken (rejecting it froze the colon for good under a load that stays).
     ColonBody colon = makeTubeColon();
     TissueSimulation simulation(colon.body, SteppingPolicy{});
     simulation.advance();
     const int planned = simulation.substeps();
+    const Eigen::Vector3d before = colon.body.positions().col(33);
+    const double timeBefore = simulation.time();
     colon.body.applyExternalForce(33, Eigen::Vector3d(0.0, 0.0, 500.0));
-    EXPECT_FALSE(simulation.advance());
+    EXPECT_TRUE(simulation.advance());
+    EXPECT_GT(simulation.time(), timeBefore) << "the colon went on";
+    EXPECT_GT(colon.body.positions()(2, 33) - before.z(), 0.0) << "the node moved with its load";
+    EXPECT_GT(colon.body.velocities().col(33).norm(), SteppingPolicy{}.maxNodeSpeed);
     colon.body.clearExternalForces();
     ASSERT_EQ(simulation.rejections().size(), 2U);
     EXPECT_NEAR(simulation.rejections()[1].speed, simulation.rejections()[0].speed,

@@ -2,14 +2,18 @@
 // alone, it curled its tip at the sigmoid-descending junction (the dial at
 // its stop, the lumen still off centre) and never fed again: the tip stayed
 // at or before 0.478 m along the colon for the whole 60 s. With torque
-// steering and its ways past a bend it cannot aim through (pull back and
-// re-approach, slide by), it got to 0.668 m within 25 s, and then went to
-// and fro in the descending colon, backing off at every loop the sigmoid
-// stored. Now it reduces a loop only once the tip stops following the shaft
-// (the clinical warning sign) and aims a lumen behind its tip by more bend,
-// not a mirrored one: it passes the splenic flexure within a minute
-// (the tip 1.02 m along the colon at 60 s when this was written, 0.735 m
-// at 25 s; the transverse colon starts at 0.885 m).
+// steering, its ways past a bend it cannot aim through, the loop rule and
+// the aiming behind its tip, this test once held it past the splenic
+// flexure within a minute (1.02 m at 60 s). That pass was not mechanics:
+// the colon had no contact with itself, the scope pushed the sigmoid into a
+// hairpin whose two limbs passed into each other (ring centres 21 mm apart
+// with lumen radii of 14 mm), and the tip crossed from one limb into the
+// other. With the lumen's self-contact (physics/LumenSelfContact.h) the
+// limbs stay apart, and the expert, which is kept inside the lumen up to the
+// junction, reaches it within 15 s (0.437 m, the tip never deeper than
+// 3.9 mm into the wall); beyond it, from about 20 s, its bent tip still
+// leaves the lumen (the README's known limits), so no further progress is
+// claimed here.
 
 #include "simcore/procedure/Operator.h"
 #include "simcore/geometry/CentrelineSampling.h"
@@ -25,34 +29,33 @@ namespace {
 
 using namespace colonosim;
 
-TEST(ExpertOperator, PassesTheSplenicFlexureWithinAMinute)
+TEST(ExpertOperator, ReachesTheSigmoidDescendingJunctionWithinFifteenSecondsInsideTheLumen)
 {
     const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(geometry::AnatomyParameters{});
     procedure::ProcedureLoop loop(anatomy, procedure::ProcedureSettings{});
     procedure::ScriptedOperator expert(procedure::expertStyle());
     const geometry::Centreline& colon = loop.loops().colon();
-    double transverseStart = colon.length();  // m along the colon
+    double descendingStart = colon.length();  // m along the colon
     for (double s = 0.0; s < colon.length(); s += 0.005) {
-        if (geometry::sampleCentreline(colon, s).segment == geometry::Segment::Transverse) {
-            transverseStart = s;
+        if (geometry::sampleCentreline(colon, s).segment == geometry::Segment::Descending) {
+            descendingStart = s;
             break;
         }
     }
-    ASSERT_LT(transverseStart, colon.length());
-    double furthestAt25 = 0.0;  // m along the colon within 25 s
-    double furthest = 0.0;      // within 60 s
-    for (int s = 1; s <= 60000 && !expert.finished(); ++s) {
+    ASSERT_LT(descendingStart, colon.length());
+    double furthest = 0.0;   // m along the colon
+    double tipDepth = -1.0;  // deepest the tip went into the wall, m
+    for (int s = 1; s <= 15000 && !expert.finished(); ++s) {
         loop.step(expert.next(loop));
         furthest = std::max(furthest, loop.lastFrame().tipArcLength);
-        if (s == 25000) {
-            furthestAt25 = furthest;
-        }
+        tipDepth = std::max(tipDepth, loop.lumen().contacts().back().depth);
     }
-    RecordProperty("furthest_at_25s_m", std::to_string(furthestAt25));
     RecordProperty("furthest_m", std::to_string(furthest));
-    RecordProperty("transverse_start_m", std::to_string(transverseStart));
-    EXPECT_GT(furthestAt25, 0.52) << "the tip got past the junction where the expert used to stall (0.478 m)";
-    EXPECT_GT(furthest, transverseStart + 0.05) << "the tip is in the transverse colon";
+    RecordProperty("tip_depth_mm", std::to_string(tipDepth * 1e3));
+    RecordProperty("descending_start_m", std::to_string(descendingStart));
+    EXPECT_GT(furthest, 0.40) << "within 8 cm of the descending colon's start (" << descendingStart << " m)";
+    EXPECT_LT(tipDepth, procedure::ProcedureSettings{}.scope.outerDiameter)
+        << "the tip stayed inside the wall's surface (less than a scope diameter into it)";
 }
 
 }  // namespace

@@ -125,8 +125,13 @@ TEST(ProcedureLoop, BadDeviceInputIsRejectedAtTheBoundary)
 // wall and the operator keeps pushing at 10 cm/s and twisting. The tissue's
 // step check may reject a violent step (a wall node flung faster than
 // maxNodeSpeed): it keeps the last good state, refines the substeps and goes
-// on. Asserted: everything stays finite and bounded, the safeguard engages in
-// under 1% of the steps, and each rejection carries its diagnostic.
+// on; a retry that fails on the same speed is taken (the step resolves that
+// motion). Asserted: everything stays finite and bounded, the safeguard
+// engages in under 1.5% of the steps (35 of 3,000 measured; 28 before the
+// colon touched itself, which changed the path; with the colon touching
+// itself but a same-speed retry refused, the colon froze at 1.358 s and
+// every later step was refused, 1,642 of them), and each rejection carries
+// its diagnostic.
 TEST(ProcedureLoop, FullDialsWhileJammedStayStable)
 {
     ProcedureLoop loop(defaultColon(), ProcedureSettings{});
@@ -147,7 +152,7 @@ TEST(ProcedureLoop, FullDialsWhileJammedStayStable)
     // A loop step is tried at most twice: count the steps the check engaged in.
     RecordProperty("rejected_tries", std::to_string(loop.tissue().rejectedSteps()));
     RecordProperty("engaged_steps", std::to_string(engaged));
-    EXPECT_LT(engaged, 30) << loop.tissue().rejectedSteps() << " tries rejected";
+    EXPECT_LT(engaged, 45) << loop.tissue().rejectedSteps() << " tries rejected";
     for (const auto& r : loop.tissue().rejections()) {
         EXPECT_NE(r.message.find("rejected"), std::string::npos);
     }
