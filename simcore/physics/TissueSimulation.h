@@ -15,7 +15,9 @@
 /// current state. The finer step is kept, but not for good: after 1 s of
 /// steps accepted at the first try it is relaxed by half; and when the retry
 /// fails on the same speed (within 10%), halving the step did not change the
-/// motion (an impulsive load, not an unstable step) and it is not kept. The
+/// motion (an impulsive load, not an unstable step): the finer step is not
+/// kept and the retried state is taken (refusing it froze the colon for good
+/// under a load that stays). The
 /// bound is also re-evaluated at the current state every replanInterval loop
 /// steps (large deformation changes the stiffness). advance() never throws.
 
@@ -77,8 +79,8 @@ public:
     /// ParameterError for a policy outside its declared ranges.
     TissueSimulation(TissueBody& body, const SteppingPolicy& policy);
 
-    /// One loop step. Returns false when the step was rejected twice and the
-    /// last good state was kept.
+    /// One loop step. Returns false when the step was rejected twice (on
+    /// different speeds) and the last good state was kept.
     bool advance();
 
     /// Re-derives substeps and integrator from the current model (after a
