@@ -51,9 +51,7 @@ LumenSelfContact::LumenSelfContact(std::vector<Ring> rings, double stiffness, co
     }
     m_centre.resize(m_rings.size());
     m_listCentre.resize(m_rings.size());
-    for (size_t i = 0; i < m_rings.size(); ++i) {
-        m_centre[i] = ringMean(static_cast<int>(i), rest);
-    }
+    computeCentres(rest);
     for (size_t i = 0; i < m_rings.size(); ++i) {
         for (size_t j = i + 1; j < m_rings.size(); ++j) {
             const double reach = m_rings[i].radius + m_rings[j].radius;
@@ -84,18 +82,25 @@ void LumenSelfContact::spread(int ring, const Eigen::Vector3d& total, Eigen::Mat
     }
 }
 
-double LumenSelfContact::overlap(const Pair& pair, Eigen::Vector3d& r, double& d) const
+LumenSelfContact::Separation LumenSelfContact::separation(const Pair& pair) const
 {
-    r = m_centre[static_cast<size_t>(pair.i)] - m_centre[static_cast<size_t>(pair.j)];
-    d = r.norm();
-    return pair.reach - d;
+    Separation s;
+    s.r = m_centre[static_cast<size_t>(pair.i)] - m_centre[static_cast<size_t>(pair.j)];
+    s.d = s.r.norm();
+    s.delta = pair.reach - s.d;
+    return s;
 }
 
-void LumenSelfContact::updateCentres(const Positions& x) const
+void LumenSelfContact::computeCentres(const Positions& x) const
 {
     for (size_t i = 0; i < m_rings.size(); ++i) {
         m_centre[i] = ringMean(static_cast<int>(i), x);
     }
+}
+
+void LumenSelfContact::updateCentres(const Positions& x) const
+{
+    computeCentres(x);
     bool stale = !m_listBuilt;
     for (size_t i = 0; i < m_rings.size() && !stale; ++i) {
         stale = (m_centre[i] - m_listCentre[i]).squaredNorm() > 0.25 * kListMargin * kListMargin;
@@ -109,9 +114,7 @@ void LumenSelfContact::refreshCandidates() const
 {
     m_candidates.clear();
     for (const Pair& pair : m_allowed) {
-        Eigen::Vector3d r;
-        double d = 0.0;
-        if (overlap(pair, r, d) > -kListMargin) {
+        if (separation(pair).delta > -kListMargin) {
             m_candidates.push_back(pair);
         }
     }
@@ -127,11 +130,9 @@ void LumenSelfContact::forEachOverlap(const Positions& x, Visit&& visit) const
     }
     updateCentres(x);
     for (const Pair& pair : m_candidates) {
-        Eigen::Vector3d r;
-        double d = 0.0;
-        const double delta = overlap(pair, r, d);
-        if (delta > 0.0 && d > 0.0) {
-            visit(pair, r, d, delta);
+        const Separation s = separation(pair);
+        if (s.delta > 0.0 && s.d > 0.0) {
+            visit(pair, s.r, s.d, s.delta);
         }
     }
 }
@@ -184,10 +185,9 @@ void LumenSelfContact::addStiffnessBound(const Positions& x, Eigen::VectorXd& kR
     // not yet, so the bound holds while a pair closes during the step.
     updateCentres(x);
     for (const Pair& pair : m_candidates) {
-        Eigen::Vector3d r;
-        double d = 0.0;
-        const double delta = overlap(pair, r, d);
-        const double norm = std::max(m_stiffness, d > 0.0 ? pushOf(m_stiffness, delta) / d : m_stiffness);
+        const Separation s = separation(pair);
+        const double norm =
+            std::max(m_stiffness, s.d > 0.0 ? pushOf(m_stiffness, s.delta) / s.d : m_stiffness);
         for (const int ring : {pair.i, pair.j}) {
             const std::vector<int>& nodes = m_rings[static_cast<size_t>(ring)].nodes;
             const double row = 2.0 * norm / static_cast<double>(nodes.size());
@@ -211,13 +211,9 @@ int LumenSelfContact::overlappingPairs(const Positions& x, double* deepest) cons
 {
     int count = 0;
     double worst = 0.0;
-    for (size_t i = 0; i < m_rings.size(); ++i) {
-        m_centre[i] = ringMean(static_cast<int>(i), x);
-    }
+    computeCentres(x);
     for (const Pair& pair : m_allowed) {
-        Eigen::Vector3d r;
-        double d = 0.0;
-        const double delta = overlap(pair, r, d);
+        const double delta = separation(pair).delta;
         if (delta > 0.0) {
             ++count;
             worst = std::max(worst, delta);

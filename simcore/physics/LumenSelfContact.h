@@ -78,6 +78,8 @@ public:
     static constexpr double kListMargin = 10e-3;  ///< m: candidate pairs are within this of touching
 
 private:
+    void computeCentres(const Positions& x) const;
+    /// Centres at x, and the candidate list rebuilt when a centre moved too far.
     void updateCentres(const Positions& x) const;
     void refreshCandidates() const;
     /// Adds df for the pair's K (definite: without the transverse part).
@@ -93,7 +95,13 @@ private:
         int j = 0;
         double reach = 0.0;  ///< r_i + r_j less the rest overlap, m
     };
-    [[nodiscard]] double overlap(const Pair& pair, Eigen::Vector3d& r, double& d) const;
+    struct Separation {
+        Eigen::Vector3d r;   ///< c_i - c_j, m
+        double d = 0.0;      ///< |c_i - c_j|, m
+        double delta = 0.0;  ///< overlap beyond the rest overlap, m (negative: apart)
+    };
+    /// The pair at the centres last computed.
+    [[nodiscard]] Separation separation(const Pair& pair) const;
     /// visit(pair, c_i - c_j, d, delta) for each candidate pair overlapping at x.
     template <class Visit>
     void forEachOverlap(const Positions& x, Visit&& visit) const;

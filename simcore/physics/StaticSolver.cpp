@@ -101,7 +101,6 @@ StaticResult solveStaticEquilibrium(TissueBody& body, double forceTolerance, int
             // 1.6 mN on a generated colon, and each further iteration cost
             // 0.3 s). Keep the best state and report the stall.
             body.positions() = start;
-            body.computeForces(body.positions(), body.velocities(), f);
             result.stalled = true;
             break;
         }
