@@ -1,6 +1,4 @@
 #include "simcore/procedure/ContactCoupling.h"
-#include <cstdio>
-#include <cstdlib>
 
 #include <algorithm>
 #include <cmath>
@@ -215,29 +213,27 @@ void ContactCoupling::update(const std::vector<contact::LumenNodeContact>& conta
     m_sweeps = 0;
 }
 
-void ContactCoupling::solveAndApply(scope::DiscreteRod& rod)
+void ContactCoupling::solveAndApply(scope::DiscreteRod& rod, const contact::LumenContact& law)
 {
-    solve(*m_contacts, rod);
-    for (size_t a = 0; a < m_active.size(); ++a) {
-        const auto node = static_cast<size_t>(m_active[a]);
-        rod.force[node] = m_baseForce[a] + m_force[a];
-    }
-}
-
-void ContactCoupling::finish(const std::vector<contact::LumenNodeContact>& contacts,
-                             const contact::LumenContact& law)
-{
+    const std::vector<contact::LumenNodeContact>& contacts = *m_contacts;
+    solve(contacts, rod);
     for (Eigen::Vector3d& load : m_load) {
         load.setZero();
     }
     m_loads.setZero(3, static_cast<Eigen::Index>(m_load.size()));
     for (size_t a = 0; a < m_active.size(); ++a) {
-        const auto i = static_cast<size_t>(m_active[a]);
-        m_load[i] = m_force[a];
+        const auto node = static_cast<size_t>(m_active[a]);
+        // Friction opposes the slip measured this step, with the normal load
+        // just settled on; its stick is regularised below the speed at which
+        // the node's own compliance would carry it past the sticking point in
+        // one step (2 mu lambda G / dt), so the explicit friction cannot
+        // reverse the slip it resists.
         const double stick =
             2.0 * law.parameters().frictionCoefficient * m_lambda[a] * m_compliance[a] / m_loopStep;
-        m_loads.col(static_cast<Eigen::Index>(i)) =
-            m_force[a] + law.friction(contacts[i], m_lambda[a], stick);
+        const Eigen::Vector3d load = m_force[a] + law.friction(contacts[node], m_lambda[a], stick);
+        m_load[node] = m_force[a];
+        m_loads.col(static_cast<Eigen::Index>(node)) = load;
+        rod.force[node] = m_baseForce[a] + load;
     }
 }
 

@@ -61,10 +61,10 @@ public:
 
     /// The whole linearised contact problem of the step solved once
     /// (Gauss-Seidel on the rod's compliance); the rod's node forces become
-    /// the base loads (gravity) plus contact.
-    void solveAndApply(scope::DiscreteRod& rod);
-    /// After the chain iterations: the final loads and friction.
-    void finish(const std::vector<contact::LumenNodeContact>& contacts, const contact::LumenContact& law);
+    /// the base loads (gravity) plus contact: the normal load and the
+    /// friction `law` gives for it (Coulomb, against the slip measured by
+    /// update()'s contacts). The wall carries the opposite of loads().
+    void solveAndApply(scope::DiscreteRod& rod, const contact::LumenContact& law);
 
     /// Contact load (normal and friction) on each inserted node (base to tip), N;
     /// the wall carries the opposite, spread over the contact's wall nodes.

@@ -75,8 +75,8 @@ double coronalTurning(const Eigen::Matrix3Xd& polyline)
     return turning;
 }
 
-LoopDetector::LoopDetector(const geometry::Centreline& colon, double excessThreshold)
-    : m_colon(colon), m_threshold(excessThreshold)
+LoopDetector::LoopDetector(const geometry::Centreline& colon, double excessThreshold, int typeDwell)
+    : m_colon(colon), m_threshold(excessThreshold), m_typeDwell(std::max(1, typeDwell))
 {}
 
 double LoopDetector::locate(const Eigen::Vector3d& p) const
@@ -193,29 +193,40 @@ LoopKind LoopDetector::update(const Eigen::Matrix3Xd& shaft, double insertion,
         m_windowTip = signals.tipArcLength;
     }
     signals.tipAdvanceRatio = m_signals.tipAdvanceRatio;
-    m_signals = signals;
 
     // Hysteresis: a loop forms above the threshold and resolves below 60% of it.
     const bool looping = m_current == LoopKind::None ? signals.excessShaft > m_threshold
                                                      : signals.excessShaft > 0.6 * m_threshold;
-    if (!looping) {
-        m_current = LoopKind::None;
-        return m_current;
+    signals.reading = looping ? classify(signals) : LoopKind::None;
+    m_signals = signals;
+    if (!looping || m_current == LoopKind::None) {
+        m_current = signals.reading;
+        m_pendingReads = 0;
+    } else if (signals.reading == m_current) {
+        m_pendingReads = 0;
+    } else {
+        // The type's own hysteresis: another type must be read typeDwell times in a row.
+        m_pendingReads = signals.reading == m_pending ? m_pendingReads + 1 : 1;
+        m_pending = signals.reading;
+        if (m_pendingReads >= m_typeDwell) {
+            m_current = signals.reading;
+            m_pendingReads = 0;
+        }
     }
+    return m_current;
+}
+
+LoopKind LoopDetector::classify(const LoopSignals& signals)
+{
     const bool crossed = signals.crossings > 0;
     switch (signals.segment) {
     case Segment::Rectum:
     case Segment::Sigmoid:
     case Segment::Descending:
-        m_current =
-            !crossed ? LoopKind::N : (signals.turning > 0.0 ? LoopKind::Alpha : LoopKind::ReverseAlpha);
-        break;
-    case Segment::SplenicFlexure:
-        m_current = crossed ? LoopKind::ReverseSplenic : LoopKind::GammaDeepTransverse;
-        break;
-    default: m_current = LoopKind::GammaDeepTransverse; break;
+        return !crossed ? LoopKind::N : (signals.turning > 0.0 ? LoopKind::Alpha : LoopKind::ReverseAlpha);
+    case Segment::SplenicFlexure: return crossed ? LoopKind::ReverseSplenic : LoopKind::GammaDeepTransverse;
+    default: return LoopKind::GammaDeepTransverse;
     }
-    return m_current;
 }
 
 }  // namespace colonosim::procedure

@@ -22,6 +22,12 @@
 ///   transverse (or hepatic flexure): GammaDeepTransverse;
 ///   splenic flexure with a crossing: ReverseSplenic;
 /// and None while the excess is below the threshold.
+/// Hysteresis: a loop forms above the threshold and resolves below 60% of
+/// it; once formed, its type changes only when another type has been read in
+/// `typeDwell` analyses in a row (a shaft on the border of two segments, or
+/// with a crossing that comes and goes, would otherwise flicker between
+/// types from one analysis to the next, and each flicker would be a new loop
+/// event in the recording).
 
 #include "simcore/geometry/Centreline.h"
 
@@ -42,14 +48,19 @@ struct LoopSignals {
     int crossings = 0;                                      ///< coronal self-crossings of the shaft
     double turning =
         0.0;  ///< signed coronal turning of the shaft in that segment, rad (+ = counter-clockwise)
-    double tipAdvanceRatio = 1.0;  ///< insertion advance / tip advance over the window (1 = 1:1)
-    double tipArcLength = 0.0;     ///< where the tip is along the colon, m
+    double tipAdvanceRatio = 1.0;       ///< insertion advance / tip advance over the window (1 = 1:1)
+    double tipArcLength = 0.0;          ///< where the tip is along the colon, m
+    LoopKind reading = LoopKind::None;  ///< this analysis's own type, before the type's hysteresis
 };
 
 class LoopDetector {
 public:
     /// `excessThreshold` (m): the stored shaft that makes a loop (default 8 cm).
-    explicit LoopDetector(const geometry::Centreline& colon, double excessThreshold = 0.08);
+    /// `typeDwell`: analyses in a row a new type must be read before a
+    /// formed loop takes it (default 20: 0.2 s at the loop's 100 Hz analyses,
+    /// shorter than any real change of loop, longer than a flicker).
+    explicit LoopDetector(const geometry::Centreline& colon, double excessThreshold = 0.08,
+                          int typeDwell = 20);
 
     /// Analyses the shaft (inserted nodes, anus to tip) at insertion length
     /// `insertion` (m). Call at the recorder rate.
@@ -68,12 +79,17 @@ private:
     static constexpr double kBackWindow = 0.05;  ///< m a node may lie behind its predecessor along the colon
     static constexpr double kForwardWindow = 0.15;  ///< m it may lie ahead
 
+    /// The type the signals of one analysis read as (the excess is above the threshold).
+    [[nodiscard]] static LoopKind classify(const LoopSignals& signals);
     /// The centreline between two arc lengths, every centimetre.
     [[nodiscard]] Eigen::Matrix3Xd colonPath(double from, double to) const;
 
     const geometry::Centreline& m_colon;
     double m_threshold;
+    int m_typeDwell;
     LoopKind m_current = LoopKind::None;
+    LoopKind m_pending = LoopKind::None;  ///< a type read instead of the current one
+    int m_pendingReads = 0;               ///< analyses in a row it has been read
     LoopSignals m_signals;
     double m_windowInsertion = 0.0;
     double m_windowTip = 0.0;

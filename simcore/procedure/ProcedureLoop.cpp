@@ -88,10 +88,8 @@ void ProcedureLoop::applyContact()
     m_scope.addGravity(m_settings.environment.gravity *
                        physics::downDirection(m_settings.environment.patientPosition));
     m_coupling.update(contacts, m_scope.rod(), static_cast<int>(shift), m_wallCompliance);
-    m_coupling.solveAndApply(m_scope.rod());
+    m_coupling.solveAndApply(m_scope.rod(), m_contact);
     m_scope.step();
-    m_coupling.finish(contacts, m_contact);
-    // Friction joins the scope's loads for the next step's solve.
     m_colon.body.clearExternalForces();
     m_maxWallForce = 0.0;
     for (Eigen::Index i = 0; i < m_coupling.loads().cols(); ++i) {

@@ -1,7 +1,5 @@
 #include "simcore/render/GlFunctions.h"
 
-#include <cstdio>
-
 namespace colonosim::render {
 
 GlFunctions::GlFunctions(const GetProcAddress& getProcAddress)

@@ -75,6 +75,15 @@ const LumenContact& law()
     return contact;
 }
 
+/// The same law with the declared Coulomb coefficient.
+const LumenContact& frictionLaw()
+{
+    static const LumenContact contact(
+        colonosim::geometry::buildProceduralColon(colonosim::geometry::AnatomyParameters{}),
+        ContactParameters{});
+    return contact;
+}
+
 const Eigen::VectorXd kRigidWall = Eigen::VectorXd::Zero(1);
 
 double solvedDeflection(Colonoscope& scope, int node, const Eigen::Vector3d& force, int measured)
@@ -130,8 +139,7 @@ TEST(ContactCoupling, OneContactIsResolvedInOneStep)
     ContactCoupling coupling(kStiffness, 1.0, kLoopStep);
     coupling.update(contacts, scope.rod(), 0, kRigidWall);
     ASSERT_EQ(coupling.activeNodes().size(), 1U);
-    coupling.solveAndApply(scope.rod());
-    coupling.finish(contacts, law());
+    coupling.solveAndApply(scope.rod(), law());
     const double g = coupling.delassus()(0, 0);
     const double lambda = coupling.loads().col(tip).y();
     EXPECT_NEAR(lambda, kStiffness * depth / (1.0 + kStiffness * g), 1e-3 * lambda);
@@ -152,8 +160,7 @@ TEST(ContactCoupling, TheTrustRegionBoundsTheMotionOfOneStep)
     const double maxStep = 1e-4;  // m
     ContactCoupling coupling(kStiffness, maxStep, kLoopStep);
     coupling.update(contacts, scope.rod(), 0, kRigidWall);
-    coupling.solveAndApply(scope.rod());
-    coupling.finish(contacts, law());
+    coupling.solveAndApply(scope.rod(), law());
     const double g = coupling.delassus()(0, 0);
     const double lambda = coupling.loads().col(tip).y();
     EXPECT_GT(lambda, 0.0);
@@ -172,16 +179,14 @@ TEST(ContactCoupling, ReleaseIsImmediateAndContactNeverPulls)
     const auto pressed = contactsOn(scope, {{tip, 1e-3}});
     ContactCoupling coupling(kStiffness, 1.0, kLoopStep);
     coupling.update(pressed, scope.rod(), 0, kRigidWall);
-    coupling.solveAndApply(scope.rod());
-    coupling.finish(pressed, law());
+    coupling.solveAndApply(scope.rod(), law());
     ASSERT_GT(coupling.loads().col(tip).y(), 0.0);
     // The wall moves 5 mm away: the node still carries its load into the
     // update (it is active), and the solve releases it.
     const auto clear = contactsOn(scope, {{tip, -0.005}});
     coupling.update(clear, scope.rod(), 0, kRigidWall);
     EXPECT_EQ(coupling.activeNodes().size(), 1U);
-    coupling.solveAndApply(scope.rod());
-    coupling.finish(clear, law());
+    coupling.solveAndApply(scope.rod(), law());
     EXPECT_EQ(coupling.loads().col(tip).norm(), 0.0);
     for (int i = 0; i < scope.numInsertedNodes(); ++i) {
         EXPECT_GE(coupling.loads().col(i).y(), 0.0) << "node " << i;
@@ -201,12 +206,46 @@ TEST(ContactCoupling, TheWallsComplianceAddsInSeries)
     ContactCoupling compliant(kStiffness, 1.0, kLoopStep);
     compliant.update(contacts, scope.rod(), 0, soft);
     EXPECT_NEAR(compliant.delassus()(0, 0) - rigid.delassus()(0, 0), 2e-3, 1e-12);
-    rigid.solveAndApply(scope.rod());
-    rigid.finish(contacts, law());
-    compliant.solveAndApply(scope.rod());
-    compliant.finish(contacts, law());
+    rigid.solveAndApply(scope.rod(), law());
+    compliant.solveAndApply(scope.rod(), law());
     EXPECT_LT(compliant.loads().col(tip).y(), rigid.loads().col(tip).y());
     EXPECT_GT(compliant.loads().col(tip).y(), 0.0);
+}
+
+// Friction reaches the scope, not only the wall: a pressed node sliding
+// along the wall carries mu lambda against its slip in the rod's loads (the
+// regularised Coulomb law, its stick below max(v_s, 2 mu lambda G / dt)),
+// the same load the wall carries the opposite of.
+TEST(ContactCoupling, FrictionActsOnTheScopeAsOnTheWall)
+{
+    const int tip = straightScope(0.15).numInsertedNodes() - 1;
+    const double mu = ContactParameters{}.frictionCoefficient;
+    // The normal load does not depend on the slip: find it and G first.
+    Colonoscope probe = straightScope(0.15);
+    const auto pressed = contactsOn(probe, {{tip, 1e-3}});
+    ContactCoupling first(kStiffness, 1.0, kLoopStep);
+    first.update(pressed, probe.rod(), 0, kRigidWall);
+    const double g = first.delassus()(0, 0);
+    first.solveAndApply(probe.rod(), frictionLaw());
+    const double lambda = first.normalLoads()[static_cast<size_t>(tip)].norm();
+    ASSERT_GT(lambda, 0.0);
+    const double stick = std::max(ContactParameters{}.stickVelocity, 2.0 * mu * lambda * g / kLoopStep);
+    // Sliding fast (4 stick speeds): Coulomb, mu lambda; slowly (a quarter): viscous.
+    for (const double speed : {4.0 * stick, 0.25 * stick}) {
+        Colonoscope scope = straightScope(0.15);
+        auto contacts = contactsOn(scope, {{tip, 1e-3}});
+        contacts[static_cast<size_t>(tip)].slip = Eigen::Vector3d(speed, 0.0, 0.0);  // m/s, along the scope
+        ContactCoupling coupling(kStiffness, 1.0, kLoopStep);
+        coupling.update(contacts, scope.rod(), 0, kRigidWall);
+        const Eigen::Vector3d before = scope.rod().force[static_cast<size_t>(tip)];
+        coupling.solveAndApply(scope.rod(), frictionLaw());
+        const Eigen::Vector3d applied = scope.rod().force[static_cast<size_t>(tip)] - before;
+        EXPECT_NEAR(applied.y(), lambda, 1e-12);
+        EXPECT_NEAR(applied.x(), -mu * lambda * std::min(1.0, speed / stick), 1e-12) << "slip " << speed;
+        EXPECT_NEAR((applied - coupling.loads().col(tip)).norm(), 0.0, 1e-15);
+    }
+    // Without slip there is no friction.
+    EXPECT_EQ(probe.rod().force[static_cast<size_t>(tip)].x(), 0.0);
 }
 
 }  // namespace

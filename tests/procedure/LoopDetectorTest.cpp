@@ -173,6 +173,32 @@ TEST(LoopDetector, LoopResolvesWithHysteresis)
     EXPECT_EQ(detector.update(straight, shaftLength(straight)), LoopKind::None);
 }
 
+// A formed loop keeps its type while the reading flickers, and takes a new
+// type once that has been read typeDwell analyses in a row.
+TEST(LoopDetector, ALoopsTypeChangesOnlyOnASteadyNewReading)
+{
+    constexpr int kDwell = 5;
+    LoopDetector detector(anatomy().centreline, 0.08, kDwell);
+    const double at = segmentMiddle(Segment::Sigmoid);
+    const Eigen::Matrix3Xd alpha = shaft(at + 0.3, at, Extra::CurlCounterClockwise);
+    const Eigen::Matrix3Xd reverse = shaft(at + 0.3, at, Extra::CurlClockwise);
+    ASSERT_EQ(detector.update(alpha, shaftLength(alpha)), LoopKind::Alpha);
+    for (int k = 0; k < 12; ++k) {
+        const bool flicker = k % 2 == 0;
+        const Eigen::Matrix3Xd& s = flicker ? reverse : alpha;
+        EXPECT_EQ(detector.update(s, shaftLength(s)), LoopKind::Alpha) << "analysis " << k;
+        EXPECT_EQ(detector.signals().reading, flicker ? LoopKind::ReverseAlpha : LoopKind::Alpha);
+    }
+    for (int k = 1; k < kDwell; ++k) {
+        EXPECT_EQ(detector.update(reverse, shaftLength(reverse)), LoopKind::Alpha)
+            << "read " << k << " times";
+    }
+    EXPECT_EQ(detector.update(reverse, shaftLength(reverse)), LoopKind::ReverseAlpha);
+    // Resolving is not delayed by the type's dwell.
+    const Eigen::Matrix3Xd straight = shaft(at + 0.3, at, Extra::None);
+    EXPECT_EQ(detector.update(straight, shaftLength(straight)), LoopKind::None);
+}
+
 TEST(LoopDetector, CoronalCrossingsOfAFigureEight)
 {
     // x = sin t, z = sin t cos t passes the origin at t = 0 and t = pi, both
