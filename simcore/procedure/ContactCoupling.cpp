@@ -153,6 +153,20 @@ void ContactCoupling::solve(const std::vector<contact::LumenNodeContact>& contac
             const contact::LumenNodeContact& c = contacts[static_cast<size_t>(m_active[a])];
             Eigen::Vector3d n;
             const double depth = c.depthAt(rod.position[static_cast<size_t>(m_active[a])] + moved, n);
+            // The normal turns as the node moves round the wall, by dx / lever,
+            // and the load turns with it: a gain of lambda G_t / lever (G_t
+            // the node's compliance along the turn), which a compliant tip or
+            // a shaft near its buckling load takes far above 1, so that the
+            // re-measured normal overshoots from sweep to sweep. The turn is
+            // taken implicitly (one Newton step on the linear model): the
+            // normal moves towards the re-measured one by 1 / (1 + gain).
+            const Eigen::Vector3d turn = n - m_normal[a];
+            const double turned = turn.norm();
+            if (turned > 0.0 && c.lever > 0.0) {
+                const double along = (m_block[a * m + a] * turn).norm() / turned + m_wall[a * m + a];
+                const double gain = m_lambda[a] * along / c.lever;
+                n = (m_normal[a] + turn / (1.0 + gain)).normalized();
+            }
             const double g = n.dot(m_block[a * m + a] * n) + m_wall[a * m + a];
             m_compliance[a] = g;
             double lambda =

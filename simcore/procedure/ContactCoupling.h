@@ -28,7 +28,12 @@
 /// change is below 1e-4 N (or 30 sweeps). The normal is re-measured in every
 /// sweep: on a curved wall it turns as the node moves (by dx / lever, with a
 /// gain lambda G_aa / lever that easily exceeds 1 on a compliant tip), and a
-/// normal frozen for the step makes the tip swing from side to side. A trust
+/// normal frozen for the step makes the tip swing from side to side. The
+/// turn is taken implicitly: each sweep moves the normal towards the
+/// re-measured one by 1 / (1 + gain), one Newton step on the linear model; a
+/// plain re-measurement overshot from sweep to sweep (the expert's first 20 s
+/// on the default colon: 1,133 of 20,000 steps at the 30-sweep cap, tip up
+/// to 35.6 mm into the wall; implicit: 19 steps, 6.3 mm). A trust
 /// region limits the contact-driven motion of each node in one step to
 /// maxStep (G_aa |lambda_a - lambda_a^old|); the rest of the way is taken in
 /// later steps, so a contact that appears with a large depth is resolved

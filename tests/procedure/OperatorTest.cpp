@@ -29,7 +29,7 @@ namespace {
 
 using namespace colonosim;
 
-TEST(ExpertOperator, ReachesTheSigmoidDescendingJunctionWithinFifteenSecondsInsideTheLumen)
+TEST(ExpertOperator, ReachesTheSigmoidDescendingJunctionWithinTwentySecondsInsideTheLumen)
 {
     const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(geometry::AnatomyParameters{});
     procedure::ProcedureLoop loop(anatomy, procedure::ProcedureSettings{});
@@ -45,7 +45,7 @@ TEST(ExpertOperator, ReachesTheSigmoidDescendingJunctionWithinFifteenSecondsInsi
     ASSERT_LT(descendingStart, colon.length());
     double furthest = 0.0;   // m along the colon
     double tipDepth = -1.0;  // deepest the tip went into the wall, m
-    for (int s = 1; s <= 15000 && !expert.finished(); ++s) {
+    for (int s = 1; s <= 20000 && !expert.finished(); ++s) {
         loop.step(expert.next(loop));
         furthest = std::max(furthest, loop.lastFrame().tipArcLength);
         tipDepth = std::max(tipDepth, loop.lumen().contacts().back().depth);
@@ -53,7 +53,7 @@ TEST(ExpertOperator, ReachesTheSigmoidDescendingJunctionWithinFifteenSecondsInsi
     RecordProperty("furthest_m", std::to_string(furthest));
     RecordProperty("tip_depth_mm", std::to_string(tipDepth * 1e3));
     RecordProperty("descending_start_m", std::to_string(descendingStart));
-    EXPECT_GT(furthest, 0.40) << "within 8 cm of the descending colon's start (" << descendingStart << " m)";
+    EXPECT_GT(furthest, 0.48) << "within 8 cm of the descending colon's start (" << descendingStart << " m)";
     EXPECT_LT(tipDepth, procedure::ProcedureSettings{}.scope.outerDiameter)
         << "the tip stayed inside the wall's surface (less than a scope diameter into it)";
 }
