@@ -229,9 +229,12 @@ Penetration measurePenetration(const ProcedureLoop& loop, contact::LumenTube& tu
 // the contact still chatters by a few millimetres.
 TEST(ProcedureLoop, AFastStraightPushNeverTunnelsThroughTheWall)
 {
-    constexpr double kSpeed = 0.5;             // m/s
-    constexpr double kThroughTheWall = 0.030;  // m
-    constexpr double kSettled = 4e-3;          // m: the penalty's depth at tens of newtons
+    constexpr double kSpeed = 0.5;  // m/s
+    // m: the snap round the flexure. 2.9 mm with the contact normal's turn
+    // taken implicitly (ContactCoupling.h); 13 mm with it re-measured plainly,
+    // and 30 mm would put the scope outside the lumen.
+    constexpr double kDeepest = 6e-3;
+    constexpr double kSettled = 4e-3;  // m: the penalty's depth at tens of newtons
     const ProcedureSettings settings;
     ProcedureLoop loop(defaultColon(), settings);
     contact::LumenTube tube(defaultColon());
@@ -264,8 +267,8 @@ TEST(ProcedureLoop, AFastStraightPushNeverTunnelsThroughTheWall)
     const double median = resting[resting.size() / 2];
     EXPECT_TRUE(summary.finite);
     EXPECT_EQ(loop.tissue().rejectedSteps(), 0);
-    EXPECT_LT(deepest, kThroughTheWall)
-        << "deepest node " << deepest * 1e3 << " mm into the wall at t = " << deepestAt << " s";
+    EXPECT_LT(deepest, kDeepest) << "deepest node " << deepest * 1e3
+                                 << " mm into the wall at t = " << deepestAt << " s";
     EXPECT_LT(median, kSettled) << "median depth of the deepest node at rest, mm: " << median * 1e3;
     EXPECT_GT(end.tipArc, 0.15) << "the tip is past the rectosigmoid flexure (m along the colon)";
 }
