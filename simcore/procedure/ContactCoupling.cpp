@@ -116,28 +116,8 @@ void ContactCoupling::addWallCompliance(const std::vector<contact::LumenNodeCont
 void ContactCoupling::solve(const std::vector<contact::LumenNodeContact>& contacts,
                             const scope::DiscreteRod& rod)
 {
+    // The start state (loads carried onto the present normals) is update()'s.
     const auto m = m_active.size();
-    m_force.resize(m);
-    m_startForce.resize(m);
-    m_normal.resize(m);
-    m_lambda.resize(m);
-    m_startLambda.resize(m);
-    m_compliance.resize(m);
-    for (size_t a = 0; a < m; ++a) {
-        const auto node = static_cast<size_t>(m_active[a]);
-        const contact::LumenNodeContact& c = contacts[node];
-        // The load keeps its magnitude and takes the wall's present normal
-        // (a node sliding round a curved wall turns its normal, not its
-        // load) when the normal has turned by less than 45 degrees; beyond
-        // that it is the part along the new normal.
-        m_normal[a] = c.normal;
-        m_startForce[a] = m_load[node];
-        const double carried = m_load[node].norm();
-        const double along = m_load[node].dot(c.normal);
-        m_startLambda[a] = along > kCarryCosine * carried ? carried : std::max(0.0, along);
-        m_lambda[a] = m_startLambda[a];
-        m_force[a] = m_lambda[a] * c.normal;
-    }
     m_sweeps = 0;
     for (int sweep = 0; sweep < kMaxSweeps && m > 0; ++sweep) {
         ++m_sweeps;
@@ -207,6 +187,7 @@ void ContactCoupling::update(const std::vector<contact::LumenNodeContact>& conta
     addWallCompliance(contacts, wallCompliance);
     const auto m = m_active.size();
     m_force.resize(m);
+    m_startForce.resize(m);
     m_normal.resize(m);
     m_lambda.resize(m);
     m_startLambda.resize(m);
@@ -216,11 +197,17 @@ void ContactCoupling::update(const std::vector<contact::LumenNodeContact>& conta
     for (size_t a = 0; a < m; ++a) {
         const auto node = static_cast<size_t>(m_active[a]);
         const contact::LumenNodeContact& c = contacts[node];
+        // The load keeps its magnitude and takes the wall's present normal
+        // (a node sliding round a curved wall turns its normal, not its
+        // load) when the normal has turned by less than 45 degrees; beyond
+        // that it is the part along the new normal.
         m_normal[a] = c.normal;
+        m_startForce[a] = m_load[node];
         const double carried = m_load[node].norm();
         const double along = m_load[node].dot(c.normal);
         m_startLambda[a] = along > kCarryCosine * carried ? carried : std::max(0.0, along);
         m_lambda[a] = m_startLambda[a];
+        m_force[a] = m_lambda[a] * c.normal;
         m_baseForce[a] = rod.force[node];
         m_compliance[a] = c.normal.dot(m_block[a * m + a] * c.normal) + m_wall[a * m + a];
     }
