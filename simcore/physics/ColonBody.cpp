@@ -64,6 +64,7 @@ ColonBody buildColonBody(const ColonAnatomy& anatomy, const TissueParameters& ti
 
     auto springs = std::make_unique<SpringSet>("wall");
     addWallSprings(mesh, axis, tissue, calibration, *springs);
+    springs->setTransverseDamping(tissue.transverseDampingRatio);
     colon.neighbours = springNeighbours(*springs, n);
     colon.springs = static_cast<SpringSet*>(&body.addForceTerm(std::move(springs)));
 

@@ -15,7 +15,9 @@
 /// Fixations: Fixed nodes are held; retroperitoneal nodes are anchored to
 /// their rest positions; mesenteric nodes hang on a Mesentery tether of
 /// stiffness k = E_m t_m (A_i / 2 pi r) / L to their root. Every spring is
-/// damped with c = beta k, and the surrounding viscera add a drag -alpha m v.
+/// damped with c = beta k (by default on the whole relative velocity of its
+/// nodes, `tissue.transverseDampingRatio`: SpringSet.h), and the surrounding
+/// viscera add a drag -alpha m v.
 /// Environment: gravity by patient position,
 /// insufflation pressure, organs as non-penetrable shapes.
 

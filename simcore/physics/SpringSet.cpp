@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace colonosim::physics {
 
@@ -52,6 +53,23 @@ void SpringSet::remove(int s)
     onActiveSetChanged(m_awake);
 }
 
+void SpringSet::setTransverseDamping(double ratio)
+{
+    if (!(ratio >= 0.0 && ratio <= 1.0)) {
+        throw std::invalid_argument("SpringSet::setTransverseDamping: ratio = " + std::to_string(ratio) +
+                                    " must lie in [0, 1]");
+    }
+    m_transverseDamping = ratio;
+}
+
+Eigen::Vector3d SpringSet::dampingForce(double c, const Eigen::Vector3d& d, double l2,
+                                        const Eigen::Vector3d& relativeVelocity) const
+{
+    // c [(1 - t) u u^T + t I] dv, u = d / l.
+    return ((1.0 - m_transverseDamping) * c * d.dot(relativeVelocity) / l2) * d +
+           (m_transverseDamping * c) * relativeVelocity;
+}
+
 void SpringSet::setStiffness(int s, double stiffness, double damping)
 {
     m_k[static_cast<size_t>(s)] = stiffness;
@@ -93,7 +111,7 @@ void SpringSet::addDampingForce(const Positions& x, const Velocities& v, Forces&
         if (l2 < kMinLength * kMinLength) {
             continue;
         }
-        const Eigen::Vector3d fs = (m_c[e] * d.dot(v.col(m_j[e]) - v.col(m_i[e])) / l2) * d;
+        const Eigen::Vector3d fs = dampingForce(m_c[e], d, l2, v.col(m_j[e]) - v.col(m_i[e]));
         f.col(m_i[e]) += fs;
         f.col(m_j[e]) -= fs;
     }
@@ -113,9 +131,12 @@ void SpringSet::addForceAndDamping(const Positions& x, const Velocities& v, Forc
             continue;
         }
         const double invL = 1.0 / std::sqrt(l2);
-        const double relativeSpeed = d.dot(v.col(j) - v.col(i)) * invL;
-        const double tension = m_k[e] * (l2 * invL - m_rest[e]) + m_c[e] * relativeSpeed;
-        const Eigen::Vector3d fs = (tension * invL) * d;
+        const Eigen::Vector3d relativeVelocity = v.col(j) - v.col(i);
+        const double relativeSpeed = d.dot(relativeVelocity) * invL;
+        // Along the spring: k (l - L) + (1 - t) c (u.dv); across it: t c dv.
+        const double tension =
+            m_k[e] * (l2 * invL - m_rest[e]) + (1.0 - m_transverseDamping) * m_c[e] * relativeSpeed;
+        const Eigen::Vector3d fs = (tension * invL) * d + (m_transverseDamping * m_c[e]) * relativeVelocity;
         f.col(i) += fs;
         f.col(j) -= fs;
     }
@@ -166,8 +187,7 @@ void SpringSet::addDampingProduct(const Positions& x, const Eigen::Matrix3Xd& dv
         if (l2 < kMinLength * kMinLength) {
             continue;
         }
-        const Eigen::Vector3d r = dv.col(m_j[e]) - dv.col(m_i[e]);
-        const Eigen::Vector3d dr = (m_c[e] * d.dot(r) / l2) * d;
+        const Eigen::Vector3d dr = dampingForce(m_c[e], d, l2, dv.col(m_j[e]) - dv.col(m_i[e]));
         df.col(m_i[e]) += dr;
         df.col(m_j[e]) -= dr;
     }
@@ -175,8 +195,9 @@ void SpringSet::addDampingProduct(const Positions& x, const Eigen::Matrix3Xd& dv
 
 bool SpringSet::linearize(const Positions& x, double h)
 {
-    // h D_e + h^2 K+_e = h^2 k t I + (h^2 k (1 - t) + h c) u u^T, with the
-    // transverse factor t = max(1 - L/l, 0) of the definite stiffness.
+    // h D_e + h^2 K+_e = (h^2 k t + h c t_d) I + (h^2 k (1 - t) + h c (1 - t_d)) u u^T,
+    // with the transverse factor t = max(1 - L/l, 0) of the definite
+    // stiffness and t_d the transverse damping ratio.
     m_linear.resize(m_active.size());
     for (size_t a = 0; a < m_active.size(); ++a) {
         const auto e = static_cast<size_t>(m_active[a]);
@@ -194,8 +215,8 @@ bool SpringSet::linearize(const Positions& x, double h)
         block.ux = u.x();
         block.uy = u.y();
         block.uz = u.z();
-        block.along = h * h * m_k[e] * transverse;
-        block.across = h * h * m_k[e] * (1.0 - transverse) + h * m_c[e];
+        block.along = h * h * m_k[e] * transverse + h * m_c[e] * m_transverseDamping;
+        block.across = h * h * m_k[e] * (1.0 - transverse) + h * m_c[e] * (1.0 - m_transverseDamping);
     }
     return true;
 }

@@ -1,12 +1,16 @@
 #pragma once
 /// \file
-/// Linear springs with axial damping between node pairs, in flat arrays.
+/// Linear springs with viscous damping between node pairs, in flat arrays.
 ///
 /// For a spring (i, j) with d = x_j - x_i, l = |d|, u = d / l, rest length L,
-/// stiffness k (N/m) and damping c (N s/m):
-///   f_i = [k (l - L) + c u.(v_j - v_i)] u,  f_j = -f_i.
+/// stiffness k (N/m), damping c (N s/m) and transverse damping ratio t:
+///   f_i = k (l - L) u + D_e (v_j - v_i),  f_j = -f_i,
+///   D_e = c [(1 - t) u u^T + t I].
+/// t = 0 damps only the rate of stretch; t = 1 damps every relative motion
+/// of the two ends, the viscosity of a tissue (a membrane of springs damped
+/// only along them keeps its out-of-plane modes undamped: ColonBody.h).
 /// Stiffness block (df_i/dx_j): K_e = k [(1 - L/l)(I - u u^T) + u u^T], with
-/// df_i/dx_i = -K_e. Damping block: D_e = c u u^T, likewise.
+/// df_i/dx_i = -K_e; the damping block D_e likewise.
 /// Structural, shear and bending springs (the NASA paper's "torsion between
 /// adjacent triangles") are all of this kind; `family` tags each for calibration.
 /// Springs shorter than kMinLength (1e-12 m) have no direction and exert no force.
@@ -39,6 +43,11 @@ public:
     [[nodiscard]] double damping(int s) const { return m_c[static_cast<size_t>(s)]; }
     [[nodiscard]] SpringFamily family(int s) const { return m_family[static_cast<size_t>(s)]; }
     void setStiffness(int s, double stiffness, double damping);
+    /// Fraction t of each spring's damping c that acts on the whole relative
+    /// velocity of its ends, c [(1 - t) u u^T + t I] dv, rather than along the
+    /// spring alone (t = 0). Throws std::invalid_argument outside [0, 1].
+    void setTransverseDamping(double ratio);
+    [[nodiscard]] double transverseDamping() const { return m_transverseDamping; }
     /// Largest tensile strain (l - L) / L of the springs of `family` at x (1; 0 if none is stretched).
     [[nodiscard]] double maxTensileStrain(const Positions& x, SpringFamily family) const;
 
@@ -62,7 +71,11 @@ private:
     template <bool Definite>
     void stiffnessProduct(const Positions& x, const Eigen::Matrix3Xd& dx, Eigen::Matrix3Xd& df) const;
 
+    [[nodiscard]] Eigen::Vector3d dampingForce(double c, const Eigen::Vector3d& d, double l2,
+                                               const Eigen::Vector3d& relativeVelocity) const;
+
     std::string m_name;
+    double m_transverseDamping = 0.0;
     std::vector<int> m_i;
     std::vector<int> m_j;
     std::vector<double> m_rest;

@@ -6,13 +6,14 @@ namespace colonosim::physics {
 
 namespace {
 using T = TissueParameters;
-constexpr std::array<Field<T>, 14> kTissueFields{{
+constexpr std::array<Field<T>, 15> kTissueFields{{
     {&T::youngModulusSpec, &T::wallYoungModulus},
     {&T::thicknessSpec, &T::wallThickness},
     {&T::densitySpec, &T::wallDensity},
     {&T::shearRatioSpec, &T::shearStiffnessRatio},
     {&T::bendingRatioSpec, &T::bendingStiffnessRatio},
     {&T::dampingTimeSpec, &T::dampingTime},
+    {&T::transverseDampingSpec, &T::transverseDampingRatio},
     {&T::mesenteryModulusSpec, &T::mesenteryModulus},
     {&T::mesenteryThicknessSpec, &T::mesenteryThickness},
     {&T::stiffeningStrainSpec, &T::mesenteryStiffeningStrain},

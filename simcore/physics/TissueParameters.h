@@ -63,6 +63,17 @@ struct TissueParameters {
         1.0e-3,
         "beta in c = beta k for every wall, mesentery and anchor spring (stiffness-proportional damping)",
         "assumption: gives a damping ratio of about 0.2 in the highest wall mode; no measured value"};
+    static constexpr ParameterSpec transverseDampingSpec{
+        "transverseDampingRatio",
+        "1",
+        1.0,
+        0.0,
+        1.0,
+        "fraction of each wall spring's damping beta k that acts on the whole relative velocity of its "
+        "two nodes rather than on the rate of stretch alone (1: the viscosity of a tissue)",
+        "model choice: damped only along the springs, the wall's out-of-plane modes were left with the "
+        "surrounding drag alone, and under the expert at 10 s 446 wall nodes vibrated above 0.1 m/s at "
+        "about 130-250 Hz (up to 1.7 m/s); at 1 the fastest node moves 0.05 m/s"};
     static constexpr ParameterSpec mesenteryModulusSpec{
         "mesenteryModulus",
         "Pa",
@@ -132,6 +143,7 @@ struct TissueParameters {
     double shearStiffnessRatio = shearRatioSpec.defaultValue;
     double bendingStiffnessRatio = bendingRatioSpec.defaultValue;
     double dampingTime = dampingTimeSpec.defaultValue;
+    double transverseDampingRatio = transverseDampingSpec.defaultValue;
     double mesenteryModulus = mesenteryModulusSpec.defaultValue;
     double mesenteryThickness = mesenteryThicknessSpec.defaultValue;
     double mesenteryStiffeningStrain = stiffeningStrainSpec.defaultValue;

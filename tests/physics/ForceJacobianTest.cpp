@@ -60,6 +60,16 @@ std::vector<TermCase> termCases()
              return s;
          },
          1e-3},
+        {"springs_with_transverse_damping",
+         [](const Positions& x) {
+             auto s = std::make_unique<SpringSet>();
+             s->setTransverseDamping(0.7);
+             s->add(0, 1, 0.8 * (x.col(1) - x.col(0)).norm(), 120.0, 0.3);
+             s->add(0, 2, 1.3 * (x.col(2) - x.col(0)).norm(), 150.0, 0.2);
+             s->add(3, 4, (x.col(4) - x.col(3)).norm(), 60.0, 0.4);
+             return s;
+         },
+         1e-3},
         {"mesentery_taut",
          [](const Positions&) {
              auto m = std::make_unique<Mesentery>();
@@ -255,29 +265,61 @@ TEST(SpringSet, FrozenSystemProductEqualsTheSeparateProducts)
     std::mt19937 random(5);
     std::uniform_real_distribution<double> uniform(-1.0, 1.0);
     const double h = 1e-3;
-    for (const std::vector<std::uint8_t>& awake :
-         {std::vector<std::uint8_t>{1, 1, 1, 1, 1}, std::vector<std::uint8_t>{0, 0, 1, 0, 1}}) {
-        springs.onActiveSetChanged(awake);
-        Positions x = rest;
-        Eigen::Matrix3Xd y(3, x.cols());
-        for (Eigen::Index i = 0; i < x.size(); ++i) {
-            x.data()[i] += 1e-3 * uniform(random);
-            y.data()[i] = uniform(random);
+    for (const double transverse : {0.0, 0.6, 1.0}) {
+        springs.setTransverseDamping(transverse);
+        for (const std::vector<std::uint8_t>& awake :
+             {std::vector<std::uint8_t>{1, 1, 1, 1, 1}, std::vector<std::uint8_t>{0, 0, 1, 0, 1}}) {
+            springs.onActiveSetChanged(awake);
+            Positions x = rest;
+            Eigen::Matrix3Xd y(3, x.cols());
+            for (Eigen::Index i = 0; i < x.size(); ++i) {
+                x.data()[i] += 1e-3 * uniform(random);
+                y.data()[i] = uniform(random);
+            }
+            Eigen::Matrix3Xd stiffness = Eigen::Matrix3Xd::Zero(3, x.cols());
+            Eigen::Matrix3Xd damping = Eigen::Matrix3Xd::Zero(3, x.cols());
+            springs.addDefiniteStiffnessProduct(x, y, stiffness);
+            springs.addDampingProduct(x, y, damping);
+            const Eigen::Matrix3Xd expected = h * damping + h * h * stiffness;
+            ASSERT_TRUE(springs.linearize(x, h));
+            Eigen::Matrix3Xd frozen = Eigen::Matrix3Xd::Zero(3, x.cols());
+            springs.addSystemProduct(y, frozen);
+            ASSERT_GT(expected.cwiseAbs().maxCoeff(), 0.0);
+            EXPECT_LT((frozen - expected).cwiseAbs().maxCoeff(), 1e-12 * expected.cwiseAbs().maxCoeff())
+                << "expected\n"
+                << expected << "\nfrozen\n"
+                << frozen;
         }
-        Eigen::Matrix3Xd stiffness = Eigen::Matrix3Xd::Zero(3, x.cols());
-        Eigen::Matrix3Xd damping = Eigen::Matrix3Xd::Zero(3, x.cols());
-        springs.addDefiniteStiffnessProduct(x, y, stiffness);
-        springs.addDampingProduct(x, y, damping);
-        const Eigen::Matrix3Xd expected = h * damping + h * h * stiffness;
-        ASSERT_TRUE(springs.linearize(x, h));
-        Eigen::Matrix3Xd frozen = Eigen::Matrix3Xd::Zero(3, x.cols());
-        springs.addSystemProduct(y, frozen);
-        ASSERT_GT(expected.cwiseAbs().maxCoeff(), 0.0);
-        EXPECT_LT((frozen - expected).cwiseAbs().maxCoeff(), 1e-12 * expected.cwiseAbs().maxCoeff())
-            << "expected\n"
-            << expected << "\nfrozen\n"
-            << frozen;
     }
+}
+
+TEST(SpringSet, TransverseDampingActsOnTheWholeRelativeVelocity)
+{
+    // Two nodes at rest length, one moving across the spring: damped only
+    // along the spring (t = 0) nothing resists it; at t = 1 the damping is
+    // c dv, a viscous tissue; in between, t c dv. Along the spring every t
+    // gives c dv.
+    SpringSet springs;
+    springs.add(0, 1, 0.01, 100.0, 0.5);
+    Positions x = Positions::Zero(3, 2);
+    x(0, 1) = 0.01;
+    Velocities across = Velocities::Zero(3, 2);
+    across(1, 1) = 2.0;  // node 1 moves along y at 2 m/s
+    Velocities along = Velocities::Zero(3, 2);
+    along(0, 1) = 2.0;
+    for (const double t : {0.0, 0.25, 1.0}) {
+        springs.setTransverseDamping(t);
+        Forces f = Forces::Zero(3, 2);
+        springs.addForceAndDamping(x, across, f);
+        EXPECT_NEAR(f(1, 0), t * 0.5 * 2.0, 1e-12) << "t = " << t;
+        EXPECT_NEAR(f(1, 1), -t * 0.5 * 2.0, 1e-12) << "t = " << t;
+        f.setZero();
+        springs.addForceAndDamping(x, along, f);
+        EXPECT_NEAR(f(0, 0), 0.5 * 2.0, 1e-12) << "t = " << t;
+        EXPECT_NEAR(f(1, 0), 0.0, 1e-12) << "t = " << t;
+    }
+    EXPECT_THROW(springs.setTransverseDamping(1.5), std::invalid_argument);
+    EXPECT_THROW(springs.setTransverseDamping(-0.1), std::invalid_argument);
 }
 
 TEST(SpringSet, RemoveKeepsTheOtherSprings)
