@@ -6,11 +6,12 @@ namespace colonosim::contact {
 
 namespace {
 using P = ContactParameters;
-constexpr std::array<Field<P>, 4> kContactFields{{
+constexpr std::array<Field<P>, 5> kContactFields{{
     {&P::stiffnessSpec, &P::contactStiffness},
     {&P::dampingSpec, &P::contactDamping},
     {&P::frictionSpec, &P::frictionCoefficient},
     {&P::stickVelocitySpec, &P::stickVelocity},
+    {&P::passesSpec, &P::couplingPasses},
 }};
 }  // namespace
 

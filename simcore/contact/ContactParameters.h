@@ -50,10 +50,23 @@ struct ContactParameters {
         "assumption: creep under a sub-threshold load stays below v_s; an explicit integrator "
         "needs mu f_n dt / (v_s m) < 2 on a scope node of mass m"};
 
+    static constexpr ParameterSpec passesSpec{
+        "couplingPasses",
+        "1",
+        3.0,
+        1.0,
+        8.0,
+        "most times one loop step solves the contact (rounded): after the first the contact is re-measured "
+        "on the shape the chain found and solved again, until no node's load changes by more than 1 mN",
+        "model choice: the coupling's model is linear about the step's start shape; over the expert's "
+        "first 60 s on the default colon the tip went at most 74 mm into the wall (6,183 steps more than "
+        "a scope diameter in) with one solve, 13.1 mm (2 steps) with three, for 4% more wall time"};
+
     double contactStiffness = stiffnessSpec.defaultValue;
     double contactDamping = dampingSpec.defaultValue;
     double frictionCoefficient = frictionSpec.defaultValue;
     double stickVelocity = stickVelocitySpec.defaultValue;
+    double couplingPasses = passesSpec.defaultValue;
 
     [[nodiscard]] static std::span<const Field<ContactParameters>> fields();
     void validate() const;

@@ -1,5 +1,7 @@
 #include "simcore/procedure/ProcedureLoop.h"
 
+#include <cmath>
+
 #include <cstdlib>
 
 #include "simcore/geometry/CentrelineSampling.h"
@@ -90,6 +92,33 @@ void ProcedureLoop::applyContact()
     m_coupling.update(contacts, m_scope.rod(), static_cast<int>(shift), m_wallCompliance);
     m_coupling.solveAndApply(m_scope.rod(), m_contact);
     m_scope.step();
+    // The coupling's model is linear about the step's start shape; where the
+    // chain's nonlinear solve ends elsewhere (a shaft near its buckling load
+    // swings further than the model says), the contact is re-measured on the
+    // shape the chain found and solved again, until the loads settle.
+    const int passes = static_cast<int>(std::lround(m_settings.contact.couplingPasses));
+    m_passes = 1;
+    while (m_passes < passes) {
+        ++m_passes;
+        m_passLoads = m_coupling.loads();
+        const auto solved = m_scope.nodePositions();
+        m_scopePass.resize(3, n);
+        for (Eigen::Index i = 0; i < n; ++i) {
+            m_scopePass.col(i) = solved[static_cast<size_t>(i)];
+        }
+        m_contact.compute(m_scopePass, m_scopeVelocity, 0.5 * m_settings.scope.outerDiameter,
+                          m_colon.body.positions(), m_colon.body.velocities(), 0);
+        m_scope.clearLoads();
+        m_scope.addGravity(m_settings.environment.gravity *
+                           physics::downDirection(m_settings.environment.patientPosition));
+        m_coupling.update(contacts, m_scope.rod(), 0, m_wallCompliance);
+        m_coupling.solveAndApply(m_scope.rod(), m_contact);
+        m_scope.step();
+        if (m_passLoads.cols() == m_coupling.loads().cols() &&
+            (m_passLoads - m_coupling.loads()).cwiseAbs().maxCoeff() < kPassTolerance) {
+            break;
+        }
+    }
     m_colon.body.clearExternalForces();
     m_maxWallForce = 0.0;
     for (Eigen::Index i = 0; i < m_coupling.loads().cols(); ++i) {

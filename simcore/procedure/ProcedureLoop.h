@@ -101,6 +101,11 @@ public:
     /// The deformed lumen and each scope node's contact, as of the last step.
     [[nodiscard]] const contact::LumenContact& lumen() const { return m_contact; }
     [[nodiscard]] const ContactCoupling& coupling() const { return m_coupling; }
+    /// Contact solves of the last step (1 to contact.couplingPasses).
+    [[nodiscard]] int couplingPasses() const { return m_passes; }
+    /// N: a further coupling pass is skipped once no load component changed
+    /// by more than this in the last one.
+    static constexpr double kPassTolerance = 1e-3;
     /// The contact bleeding marks so far, placed on the wall's chart for the
     /// endoscope view; bleeding() has the model's marks (rest points, forces).
     [[nodiscard]] const std::vector<render::BleedingMark>& bleedingMarks() const { return m_viewMarks; }
@@ -134,8 +139,12 @@ private:
     ProcedureFrame m_frame;
     ProcedureOutputs m_outputs;
     Eigen::Matrix3Xd m_scopeNow, m_scopePrevious, m_scopeVelocity;
-    Eigen::Matrix3Xd m_scopeAligned;  ///< the previous shape aligned from the tip (continuous detection)
-    double m_maxWallForce = 0.0;      ///< largest contact load on one scope node this step, N
+    Eigen::Matrix3Xd m_scopeAligned;
+    Eigen::Matrix3Xd m_scopePass;  ///< the shape a coupling pass re-measures the contact on
+    Eigen::Matrix3Xd m_passLoads;  ///< the previous pass's contact loads
+    int m_passes = 0;  ///< coupling passes of the last step  ///< the previous shape aligned from the tip
+                       ///< (continuous detection)
+    double m_maxWallForce = 0.0;  ///< largest contact load on one scope node this step, N
     double m_time = 0.0;
     long m_steps = 0;
 };

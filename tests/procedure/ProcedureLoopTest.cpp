@@ -13,6 +13,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace {
@@ -320,6 +321,44 @@ TEST(ProcedureLoop, AColonPressedByAStillScopeComesToRest)
     EXPECT_LT(highForce - lowForce, kForceSpread)
         << "handle force between " << lowForce << " and " << highForce << " N";
     EXPECT_GT(lowForce, 0.0) << "the scope still presses on the wall";
+}
+
+}  // namespace
+
+namespace {
+
+// The contact is solved once per step, or again on the shape the chain found
+// until the loads settle, at most contact.couplingPasses times; a count
+// outside its range is refused with the parameter's name.
+TEST(ProcedureLoop, TheContactIsSolvedAtMostCouplingPassesTimesPerStep)
+{
+    for (const double passes : {1.0, 3.0}) {
+        ProcedureSettings settings;
+        settings.contact.couplingPasses = passes;
+        ProcedureLoop loop(defaultColon(), settings);
+        InputSample input;
+        int fewest = 100;
+        int most = 0;
+        for (int s = 1; s <= 500; ++s) {
+            input.insertion = 0.5 * s * settings.stepping.loopStep;  // the 0.5 m/s push above
+            loop.step(input);
+            fewest = std::min(fewest, loop.couplingPasses());
+            most = std::max(most, loop.couplingPasses());
+        }
+        EXPECT_GE(fewest, 1) << passes;
+        EXPECT_EQ(most, static_cast<int>(passes)) << "the shaft against the flexure takes every pass allowed";
+        if (passes > 1.0) {
+            EXPECT_LT(fewest, most) << "a step whose loads settle at once stops early";
+        }
+    }
+    ProcedureSettings bad;
+    bad.contact.couplingPasses = 0.0;
+    try {
+        ProcedureLoop loop(defaultColon(), bad);
+        ADD_FAILURE() << "0 passes accepted";
+    } catch (const params::ParameterError& e) {
+        EXPECT_NE(std::string(e.what()).find("contact.couplingPasses"), std::string::npos) << e.what();
+    }
 }
 
 }  // namespace
