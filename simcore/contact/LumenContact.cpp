@@ -19,11 +19,15 @@ LumenContact::LumenContact(const geometry::ColonAnatomy& anatomy, const ContactP
     m_parameters.validate();
 }
 
-const std::vector<LumenNodeContact>&
-LumenContact::compute(const Eigen::Matrix3Xd& scope, const Eigen::Matrix3Xd& scopeVelocities, double radius,
-                      const Eigen::Matrix3Xd& wall, const Eigen::Matrix3Xd& wallVelocities, int addedAtBase)
+const std::vector<LumenNodeContact>& LumenContact::compute(const Eigen::Matrix3Xd& scope,
+                                                           const Eigen::Matrix3Xd& scopeVelocities,
+                                                           double radius, const Eigen::Matrix3Xd& wall,
+                                                           const Eigen::Matrix3Xd& wallVelocities,
+                                                           int addedAtBase, bool wallMoved)
 {
-    m_tube.update(wall);
+    if (wallMoved) {
+        m_tube.update(wall);
+    }
     const auto n = static_cast<size_t>(scope.cols());
     // Each node's section at the last call, aligned from the tip.
     m_previousRing.resize(m_contacts.size());

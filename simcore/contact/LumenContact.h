@@ -67,12 +67,13 @@ public:
     /// its base-side neighbour's (the base node around the anus). The
     /// neighbour's station alone loses its way where the colon is pleated on
     /// the shaft and consecutive nodes lie more than the search's four
-    /// sections apart.
+    /// sections apart. `wallMoved` false: `wall` is the one of the last call
+    /// and the tube's rings are not measured again.
     const std::vector<LumenNodeContact>& compute(const Eigen::Matrix3Xd& scope,
                                                  const Eigen::Matrix3Xd& scopeVelocities, double radius,
                                                  const Eigen::Matrix3Xd& wall,
                                                  const Eigen::Matrix3Xd& wallVelocities,
-                                                 int addedAtBase = kNoHistory);
+                                                 int addedAtBase = kNoHistory, bool wallMoved = true);
     static constexpr int kNoHistory = -(1 << 30);
     [[nodiscard]] const std::vector<LumenNodeContact>& contacts() const { return m_contacts; }
     [[nodiscard]] const LumenTube& tube() const { return m_tube; }

@@ -83,9 +83,16 @@ void ProcedureLoop::applyContact()
             m_scopeVelocity.col(i) = (m_scopeNow.col(i) - previous.col(i)) / m_settings.stepping.loopStep;
         }
     }
+    // The contact is measured against the wall where its own motion carries
+    // it over the step (x + v dt), as the scope's side is measured where the
+    // step's loads will put it: against the wall's present position a node
+    // still moving away from a load is unloaded the next step and pushed
+    // again the one after, and a colon pressed by a still scope kept a
+    // load flipping between two values from step to step.
+    m_wallAhead = m_colon.body.positions() + m_settings.stepping.loopStep * m_colon.body.velocities();
     const auto& contacts =
-        m_contact.compute(m_scopeNow, m_scopeVelocity, 0.5 * m_settings.scope.outerDiameter,
-                          m_colon.body.positions(), m_colon.body.velocities(), static_cast<int>(shift));
+        m_contact.compute(m_scopeNow, m_scopeVelocity, 0.5 * m_settings.scope.outerDiameter, m_wallAhead,
+                          m_colon.body.velocities(), static_cast<int>(shift));
     m_scope.clearLoads();
     m_scope.addGravity(m_settings.environment.gravity *
                        physics::downDirection(m_settings.environment.patientPosition));
@@ -106,8 +113,8 @@ void ProcedureLoop::applyContact()
         for (Eigen::Index i = 0; i < n; ++i) {
             m_scopePass.col(i) = solved[static_cast<size_t>(i)];
         }
-        m_contact.compute(m_scopePass, m_scopeVelocity, 0.5 * m_settings.scope.outerDiameter,
-                          m_colon.body.positions(), m_colon.body.velocities(), 0);
+        m_contact.compute(m_scopePass, m_scopeVelocity, 0.5 * m_settings.scope.outerDiameter, m_wallAhead,
+                          m_colon.body.velocities(), 0, false);
         m_scope.clearLoads();
         m_scope.addGravity(m_settings.environment.gravity *
                            physics::downDirection(m_settings.environment.patientPosition));

@@ -139,6 +139,7 @@ private:
     ProcedureFrame m_frame;
     ProcedureOutputs m_outputs;
     Eigen::Matrix3Xd m_scopeNow, m_scopePrevious, m_scopeVelocity;
+    Eigen::Matrix3Xd m_wallAhead;  ///< wall positions carried one step by their velocities
     Eigen::Matrix3Xd m_scopeAligned;
     Eigen::Matrix3Xd m_scopePass;  ///< the shape a coupling pass re-measures the contact on
     Eigen::Matrix3Xd m_passLoads;  ///< the previous pass's contact loads

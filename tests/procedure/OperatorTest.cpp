@@ -36,9 +36,9 @@ using namespace colonosim;
 // Stays inside: over 45 s the expert presses on the junction for 25 s with
 // its dial at the stop. Solving the contact once per step (the coupling's
 // model linear about the step's start shape) its tip was more than a scope
-// diameter into the wall for 462 steps by 45 s (20 mm deep), and went
+// diameter into the wall for 74 steps by 45 s (18.4 mm deep), and went
 // through it by 50 s; with the contact re-solved on the shape the chain
-// found (contact.couplingPasses = 3) for 2 steps (13.1 mm).
+// found (contact.couplingPasses = 3) for none (8.5 mm at most).
 TEST(ExpertOperator, ReachesTheSigmoidDescendingJunctionWithinTwentySecondsAndStaysInsideTheLumen)
 {
     constexpr int kSteps = 45000;      // 45 s at 1 kHz
