@@ -28,6 +28,12 @@ constexpr double kNearStop = 0.05;
 constexpr double kBlockedFor = 1.5;
 /// m fed within kBlockedFor that still counts as getting on.
 constexpr double kBlockedFeed = 0.005;
+/// s without getting on (kBlockedFeed) while inserting or sliding by, the
+/// dials short of their stops, before the expert changes approach all the
+/// same: a hand that neither feeds nor turns further is stuck (at the
+/// sigmoid-descending junction it held 3.8 N, above kSlideForce, with the
+/// up/down dial at 2.45 rad, and stood still for 20 s).
+constexpr double kStillFor = 3.0;
 /// m withdrawn to straighten the sigmoid and give the bending section room
 /// before re-aiming ("pull back and re-approach").
 constexpr double kPullBackLength = 0.04;
@@ -160,6 +166,16 @@ InputSample ScriptedOperator::next(const ProcedureLoop& loop)
     const bool looped =
         loop.loops().current() != LoopKind::None && loop.loops().signals().tipAdvanceRatio > kTipLags;
     const bool backOff = force > m_style.forceLimit || (m_style.reducesLoops && looped);
+    bool still = false;
+    if (!m_style.aimsBeforeInserting || (m_phase != Phase::Insert && m_phase != Phase::SlideBy)) {
+        m_stillSince = -1.0;
+    } else if (m_stillSince < 0.0 || m_input.insertion > m_stillAt + kBlockedFeed) {
+        m_stillSince = loop.time();
+        m_stillAt = m_input.insertion;
+    } else if (loop.time() - m_stillSince >= kStillFor) {
+        still = true;
+        m_stillSince = -1.0;
+    }
     switch (m_phase) {
     case Phase::Insert: {
         // Blocked: a dial at its stop and the scope hardly fed since (the
@@ -176,7 +192,7 @@ InputSample ScriptedOperator::next(const ProcedureLoop& loop)
             backOffBy(Phase::ReduceLoop, kReduceLength);
         } else if (frame.tipArcLength >= colon.length() - 0.03 || m_input.insertion >= maxInsertion) {
             m_phase = Phase::Withdraw;
-        } else if (m_blockedSince >= 0.0 && loop.time() - m_blockedSince >= kBlockedFor) {
+        } else if ((m_blockedSince >= 0.0 && loop.time() - m_blockedSince >= kBlockedFor) || still) {
             // Pull back and re-approach; after kPullBacksPerBend of those at
             // the same bend, slide by it.
             if (m_bendArc < 0.0 || frame.tipArcLength > m_bendArc + kNewBend) {
@@ -214,7 +230,7 @@ InputSample ScriptedOperator::next(const ProcedureLoop& loop)
             backOffBy(Phase::ReduceLoop, kReduceLength);
         } else if (m_offCentre < kAimedWithin) {
             m_phase = Phase::Insert;
-        } else if (m_input.insertion >= m_slideUntil) {
+        } else if (m_input.insertion >= m_slideUntil || still) {
             m_pullBacks = 0;  // start the round again: pull back, re-aim, slide
             backOffBy(Phase::PullBack, kPullBackLength);
         } else if (force < kSlideForce) {

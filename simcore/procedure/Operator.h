@@ -93,6 +93,8 @@ private:
     double m_reduceFloor = 0.0;    ///< insertion at which a loop reduction ends even with the loop there, m
     double m_blockedSince = -1.0;  ///< s: since when a dial is at its stop with no headway; < 0: not
     double m_blockedAt = 0.0;      ///< insertion then, m
+    double m_stillSince = -1.0;    ///< s: since when the scope has not been fed kBlockedFeed; < 0: not
+    double m_stillAt = 0.0;        ///< insertion then, m
     int m_pullBacks = 0;           ///< pull-backs tried at the present bend
     double m_bendArc = -1.0;       ///< where along the colon the tip was blocked, m
     double m_slideUntil = 0.0;     ///< insertion at which a slide-by gives up, m
