@@ -90,15 +90,7 @@ void ProcedureLoop::applyContact()
     // again the one after, and a colon pressed by a still scope kept a
     // load flipping between two values from step to step.
     m_wallAhead = m_colon.body.positions() + m_settings.stepping.loopStep * m_colon.body.velocities();
-    const auto& contacts =
-        m_contact.compute(m_scopeNow, m_scopeVelocity, 0.5 * m_settings.scope.outerDiameter, m_wallAhead,
-                          m_colon.body.velocities(), static_cast<int>(shift));
-    m_scope.clearLoads();
-    m_scope.addGravity(m_settings.environment.gravity *
-                       physics::downDirection(m_settings.environment.patientPosition));
-    m_coupling.update(contacts, m_scope.rod(), static_cast<int>(shift), m_wallCompliance);
-    m_coupling.solveAndApply(m_scope.rod(), m_contact);
-    m_scope.step();
+    solveContact(m_scopeNow, static_cast<int>(shift), true);
     // The coupling's model is linear about the step's start shape; where the
     // chain's nonlinear solve ends elsewhere (a shaft near its buckling load
     // swings further than the model says), the contact is re-measured on the
@@ -113,19 +105,13 @@ void ProcedureLoop::applyContact()
         for (Eigen::Index i = 0; i < n; ++i) {
             m_scopePass.col(i) = solved[static_cast<size_t>(i)];
         }
-        m_contact.compute(m_scopePass, m_scopeVelocity, 0.5 * m_settings.scope.outerDiameter, m_wallAhead,
-                          m_colon.body.velocities(), 0, false);
-        m_scope.clearLoads();
-        m_scope.addGravity(m_settings.environment.gravity *
-                           physics::downDirection(m_settings.environment.patientPosition));
-        m_coupling.update(contacts, m_scope.rod(), 0, m_wallCompliance);
-        m_coupling.solveAndApply(m_scope.rod(), m_contact);
-        m_scope.step();
+        solveContact(m_scopePass, 0, false);
         if (m_passLoads.cols() == m_coupling.loads().cols() &&
             (m_passLoads - m_coupling.loads()).cwiseAbs().maxCoeff() < kPassTolerance) {
             break;
         }
     }
+    const std::vector<contact::LumenNodeContact>& contacts = m_contact.contacts();
     m_colon.body.clearExternalForces();
     m_maxWallForce = 0.0;
     for (Eigen::Index i = 0; i < m_coupling.loads().cols(); ++i) {
@@ -143,6 +129,18 @@ void ProcedureLoop::applyContact()
         }
         m_maxWallForce = std::max(m_maxWallForce, load.norm());
     }
+}
+
+void ProcedureLoop::solveContact(const Eigen::Matrix3Xd& scope, int addedAtBase, bool wallMoved)
+{
+    const auto& contacts = m_contact.compute(scope, m_scopeVelocity, 0.5 * m_settings.scope.outerDiameter,
+                                             m_wallAhead, m_colon.body.velocities(), addedAtBase, wallMoved);
+    m_scope.clearLoads();
+    m_scope.addGravity(m_settings.environment.gravity *
+                       physics::downDirection(m_settings.environment.patientPosition));
+    m_coupling.update(contacts, m_scope.rod(), addedAtBase, m_wallCompliance);
+    m_coupling.solveAndApply(m_scope.rod(), m_contact);
+    m_scope.step();
 }
 
 const ProcedureOutputs& ProcedureLoop::step(const InputSample& input)

@@ -113,6 +113,11 @@ public:
 
 private:
     void applyContact();
+    /// One contact solve: the contacts of the scope shape `scope` (3 x n)
+    /// against m_wallAhead, the coupling's loads for them, and the chain
+    /// solved under those loads. `wallMoved` false: the lumen's rings are the
+    /// last solve's.
+    void solveContact(const Eigen::Matrix3Xd& scope, int addedAtBase, bool wallMoved);
     void observe();
     void updateBleeding();
 
