@@ -144,13 +144,12 @@ private:
     ProcedureFrame m_frame;
     ProcedureOutputs m_outputs;
     Eigen::Matrix3Xd m_scopeNow, m_scopePrevious, m_scopeVelocity;
-    Eigen::Matrix3Xd m_wallAhead;  ///< wall positions carried one step by their velocities
-    Eigen::Matrix3Xd m_scopeAligned;
-    Eigen::Matrix3Xd m_scopePass;  ///< the shape a coupling pass re-measures the contact on
-    Eigen::Matrix3Xd m_passLoads;  ///< the previous pass's contact loads
-    int m_passes = 0;  ///< coupling passes of the last step  ///< the previous shape aligned from the tip
-                       ///< (continuous detection)
-    double m_maxWallForce = 0.0;  ///< largest contact load on one scope node this step, N
+    Eigen::Matrix3Xd m_wallAhead;     ///< wall positions carried one step by their velocities
+    Eigen::Matrix3Xd m_scopeAligned;  ///< the previous shape aligned from the tip (continuous detection)
+    Eigen::Matrix3Xd m_scopePass;     ///< the shape a coupling pass re-measures the contact on
+    Eigen::Matrix3Xd m_passLoads;     ///< the previous pass's contact loads
+    int m_passes = 0;                 ///< coupling passes of the last step
+    double m_maxWallForce = 0.0;      ///< largest contact load on one scope node this step, N
     double m_time = 0.0;
     long m_steps = 0;
 };
