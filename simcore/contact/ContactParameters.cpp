@@ -6,12 +6,13 @@ namespace colonosim::contact {
 
 namespace {
 using P = ContactParameters;
-constexpr std::array<Field<P>, 5> kContactFields{{
+constexpr std::array<Field<P>, 6> kContactFields{{
     {&P::stiffnessSpec, &P::contactStiffness},
     {&P::dampingSpec, &P::contactDamping},
     {&P::frictionSpec, &P::frictionCoefficient},
     {&P::stickVelocitySpec, &P::stickVelocity},
     {&P::passesSpec, &P::couplingPasses},
+    {&P::relaxationSpec, &P::loadRelaxation},
 }};
 }  // namespace
 

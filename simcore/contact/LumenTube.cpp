@@ -114,26 +114,44 @@ void LumenTube::update(const Eigen::Matrix3Xd& wall)
 
 LumenStation LumenTube::locate(const Eigen::Vector3d& p, int start, int window) const
 {
-    // The nearest point of the centre polyline within `window` sections of
-    // `start`: near the start, so a point outside the wall is not taken for
-    // a neighbouring loop of the colon; nearest, so a point on the inner
-    // side of a bend, where the ring planes cross, is not misplaced.
+    // Walk along the centre polyline from section `start` while its nearest
+    // point comes closer, at most `window` sections: the station follows the
+    // point continuously. The nearest point and not the bracketing ring
+    // planes, which cross on the inner side of a bend; a walk and not the
+    // nearest section within the window, because where the colon is folded
+    // (a flattened ring at a hairpin) a section a few rings on can lie
+    // nearer across the wall than the point's own: the point would be
+    // taken through the fold in one step, and pushed on the wrong way. A
+    // point outside the wall stays in its own part of the colon and is
+    // pushed back the way it came, so the lumen cannot be tunnelled into a
+    // neighbouring loop at any speed.
     const int reach = std::max(0, window);
     const int lastSection = m_numRings - 2;
     const int from = std::clamp(start, 0, lastSection);
-    LumenStation best;
-    double bestDistance = std::numeric_limits<double>::infinity();
-    for (int i = std::max(0, from - reach); i <= std::min(lastSection, from + reach); ++i) {
+    const auto nearest = [&](int i, double& u) {
         const Eigen::Vector3d& c0 = centre(i);
         const Eigen::Vector3d d = centre(i + 1) - c0;
         const double length2 = d.squaredNorm();
-        const double raw = length2 > 0.0 ? (p - c0).dot(d) / length2 : 0.0;
-        const double u = std::clamp(raw, 0.0, 1.0);
-        const double distance = (p - (c0 + u * d)).squaredNorm();
-        if (distance < bestDistance) {
+        u = std::clamp(length2 > 0.0 ? (p - c0).dot(d) / length2 : 0.0, 0.0, 1.0);
+        return (p - (c0 + u * d)).squaredNorm();
+    };
+    LumenStation best;
+    best.ring = from;
+    double bestDistance = nearest(from, best.u);
+    for (const int direction : {1, -1}) {
+        for (int i = from + direction; std::abs(i - from) <= reach && i >= 0 && i <= lastSection;
+             i += direction) {
+            double u = 0.0;
+            const double distance = nearest(i, u);
+            if (!(distance < bestDistance)) {
+                break;
+            }
             bestDistance = distance;
             best.ring = i;
             best.u = u;
+        }
+        if (best.ring != from) {
+            break;  // it walked forward: the nearest point is not behind
         }
     }
     best.beforeStart = best.ring == 0 && height(0, p) < 0.0;

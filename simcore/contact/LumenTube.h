@@ -11,13 +11,16 @@
 /// c_{i+1} - c_{i-1}, one-sided at the ends) and the 2-D coordinates of its
 /// nodes in its own plane (basis: node 0's radial direction, and a_i x it).
 ///
-/// Station of a point p: the nearest point of the polyline of ring centres,
-/// section (i, i + 1) at fraction u in [0, 1], searched only within a few
-/// sections of a nearby section (LumenContact.h says which), never
-/// globally: a point pushed outside the wall stays in its own part of the
-/// colon and is pushed back the way it came, so the lumen cannot be
-/// tunnelled into a neighbouring loop at any speed. (The nearest point and
-/// not the bracketing ring planes, which cross on the inner side of a bend.)
+/// Station of a point p: a nearest point of the polyline of ring centres,
+/// section (i, i + 1) at fraction u in [0, 1], found by walking along the
+/// polyline from a nearby section (LumenContact.h says which) while the
+/// distance falls, a few sections at most; never globally: a point pushed
+/// outside the wall stays in its own part of the colon and is pushed back
+/// the way it came, so the lumen cannot be tunnelled into a neighbouring
+/// loop at any speed. A walk, not the nearest section within reach: where
+/// the colon folds on itself (a flattened ring at a hairpin) the other leg
+/// of the fold can lie nearer across the wall. (The nearest point and not
+/// the bracketing ring planes, which cross on the inner side of a bend.)
 ///
 /// Wall at a station along a radial direction e (perpendicular to the local
 /// axis): the ray from each ring's centre along e meets the ring polygon at
@@ -80,7 +83,8 @@ public:
         return (p - centre(ring)).dot(axis(ring));
     }
     /// The section holding `p`: the nearest point of the centre polyline
-    /// within `window` sections of section `start`.
+    /// reached by walking from section `start` while the distance falls, at
+    /// most `window` sections.
     [[nodiscard]] LumenStation locate(const Eigen::Vector3d& p, int start, int window = 4) const;
     /// The wall seen from `p` at `station`, radially.
     [[nodiscard]] LumenWallSample wallAt(const Eigen::Vector3d& p, const LumenStation& station) const;

@@ -214,10 +214,52 @@ void ContactCoupling::update(const std::vector<contact::LumenNodeContact>& conta
     m_sweeps = 0;
 }
 
+void ContactCoupling::relax()
+{
+    // Each solve moves the loads the fraction omega of the way from where
+    // they start (the last solve's) to what the linear model asks for.
+    for (size_t a = 0; a < m_active.size(); ++a) {
+        m_force[a] = m_startForce[a] + m_relaxation * (m_force[a] - m_startForce[a]);
+        m_lambda[a] = m_force[a].norm();
+    }
+}
+
+void ContactCoupling::measureSlipCompliance()
+{
+    // R_a = sum_b || P_a X_ab P_b ||_F, X_ab = C_ab + W_ab I and P the
+    // projection onto a contact's tangent plane: how far the friction of all
+    // the contacts moves node a along its wall, per newton. The Frobenius
+    // norm bounds the spectral one, so with the stick below
+    // 2 mu lambda_b R_b / dt the friction map over one step,
+    // dx_a = -sum_b P_a X_ab P_b dx_b / (2 R_b), has columns of norm at most
+    // 1/2 (X is symmetric) and by Gershgorin a spectral radius of at most
+    // 1/2. ||P_a X P_b||^2 = ||X||^2 - |X n_b|^2 - |X^T n_a|^2 + (n_a.X n_b)^2.
+    const auto m = m_active.size();
+    m_slipCompliance.assign(m, 0.0);
+    for (size_t a = 0; a < m; ++a) {
+        const Eigen::Vector3d& na = m_normal[a];
+        for (size_t b = a; b < m; ++b) {
+            const Eigen::Vector3d& nb = m_normal[b];
+            const Eigen::Matrix3d x = m_block[a * m + b] + m_wall[a * m + b] * Eigen::Matrix3d::Identity();
+            const Eigen::Vector3d xb = x * nb;
+            const double across = na.dot(xb);
+            const double squared =
+                x.squaredNorm() - xb.squaredNorm() - (x.transpose() * na).squaredNorm() + across * across;
+            const double norm = std::sqrt(std::max(0.0, squared));
+            m_slipCompliance[a] += norm;
+            if (b != a) {
+                m_slipCompliance[b] += norm;
+            }
+        }
+    }
+}
+
 void ContactCoupling::solveAndApply(scope::DiscreteRod& rod, const contact::LumenContact& law)
 {
     const std::vector<contact::LumenNodeContact>& contacts = *m_contacts;
     solve(contacts, rod);
+    relax();
+    measureSlipCompliance();
     for (Eigen::Vector3d& load : m_load) {
         load.setZero();
     }
@@ -225,12 +267,15 @@ void ContactCoupling::solveAndApply(scope::DiscreteRod& rod, const contact::Lume
     for (size_t a = 0; a < m_active.size(); ++a) {
         const auto node = static_cast<size_t>(m_active[a]);
         // Friction opposes the slip measured this step, with the normal load
-        // just settled on; its stick is regularised below the speed at which
-        // the node's own compliance would carry it past the sticking point in
-        // one step (2 mu lambda G / dt), so the explicit friction cannot
-        // reverse the slip it resists.
+        // just settled on. It is explicit, so its stick is regularised below
+        // the speed at which the friction of all the contacts together would
+        // carry the nodes back past their sticking points in one step
+        // (2 mu lambda R / dt, see measureSlipCompliance()): it cannot
+        // reverse the slip it resists. With a node's own compliance alone in
+        // place of R, the many contacts of a shaft bent round the sigmoid
+        // swung it from side to side by up to 20 mm a step.
         const double stick =
-            2.0 * law.parameters().frictionCoefficient * m_lambda[a] * m_compliance[a] / m_loopStep;
+            2.0 * law.parameters().frictionCoefficient * m_lambda[a] * m_slipCompliance[a] / m_loopStep;
         const Eigen::Vector3d load = m_force[a] + law.friction(contacts[node], m_lambda[a], stick);
         m_load[node] = m_force[a];
         m_loads.col(static_cast<Eigen::Index>(node)) = load;

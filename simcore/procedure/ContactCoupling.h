@@ -39,6 +39,18 @@
 /// later steps, so a contact that appears with a large depth is resolved
 /// over several steps rather than thrown across the lumen.
 ///
+/// Relaxation. The linear model leaves out how the loads' lever arms change
+/// as the shaft moves (its geometric stiffness: the chain's response to a
+/// load on a shaft bent round the sigmoid under 5-10 N is 10-30% larger than
+/// C says), and a contact's normal turns with the node round a wall of
+/// 10-15 mm radius: under a 9 N load that is a stiffness of about 800 N/m,
+/// against compliances of 2-9 mm/N. The solve's error is thus fed back, with
+/// a gain of several, through the next re-measure: the shaft swung from side
+/// to side by 5-20 mm a step. Each solve therefore applies the fraction
+/// omega of its load change (contact.loadRelaxation), as a partitioned
+/// coupling does; the remainder follows over the next solves (the passes of
+/// the step and the next steps, 1 ms each).
+///
 #include "simcore/contact/LumenContact.h"
 #include "simcore/scope/DiscreteRod.h"
 
@@ -51,9 +63,10 @@ namespace colonosim::procedure {
 class ContactCoupling {
 public:
     /// `contactStiffness` k_c, N/m; `maxStep` the trust region, m per loop
-    /// step; `loopStep` dt, s.
-    ContactCoupling(double contactStiffness, double maxStep, double loopStep)
-        : m_stiffness(contactStiffness), m_maxStep(maxStep), m_loopStep(loopStep)
+    /// step; `loopStep` dt, s; `relaxation` omega in (0, 1], the fraction of
+    /// the solved load change that each solve applies.
+    ContactCoupling(double contactStiffness, double maxStep, double loopStep, double relaxation)
+        : m_stiffness(contactStiffness), m_maxStep(maxStep), m_loopStep(loopStep), m_relaxation(relaxation)
     {}
 
     /// Updates the node loads from `contacts` (one per inserted node, measured
@@ -65,10 +78,12 @@ public:
                 int addedAtBase, const Eigen::VectorXd& wallCompliance);
 
     /// The whole linearised contact problem of the step solved once
-    /// (Gauss-Seidel on the rod's compliance); the rod's node forces become
-    /// the base loads (gravity) plus contact: the normal load and the
-    /// friction `law` gives for it (Coulomb, against the slip measured by
-    /// update()'s contacts). The wall carries the opposite of loads().
+    /// (Gauss-Seidel on the rod's compliance), and the normal loads moved the
+    /// fraction omega of the way from their start to the solution; the rod's
+    /// node forces become the base loads (gravity) plus contact: the normal
+    /// load and the friction `law` gives for it (Coulomb, against the slip
+    /// measured by update()'s contacts). The wall carries the opposite of
+    /// loads().
     void solveAndApply(scope::DiscreteRod& rod, const contact::LumenContact& law);
 
     /// Contact load (normal and friction) on each inserted node (base to tip), N;
@@ -84,6 +99,8 @@ public:
 
 private:
     void align(int numNodes, int addedAtBase);
+    void relax();
+    void measureSlipCompliance();
     void buildCompliance(const scope::DiscreteRod& rod);
     void addWallCompliance(const std::vector<contact::LumenNodeContact>& contacts,
                            const Eigen::VectorXd& wallCompliance);
@@ -92,6 +109,7 @@ private:
     double m_stiffness;
     double m_maxStep;
     double m_loopStep;
+    double m_relaxation;
     int m_sweeps = 0;
     std::vector<Eigen::Vector3d> m_load;  ///< normal load per node (lambda n), N
     std::vector<int> m_active;            ///< nodes in the update
@@ -101,6 +119,7 @@ private:
     std::vector<double> m_wall;            ///< wall compliance shared by (a, b), m/N
     std::vector<Eigen::Vector3d> m_force, m_startForce, m_normal;
     std::vector<double> m_lambda, m_startLambda, m_compliance;
+    std::vector<double> m_slipCompliance;  ///< R_a, m/N (measureSlipCompliance())
     std::vector<Eigen::Vector3d> m_baseForce;
     const std::vector<contact::LumenNodeContact>* m_contacts = nullptr;
     Eigen::Matrix3Xd m_loads;

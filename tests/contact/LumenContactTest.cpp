@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <string>
 
 namespace colonosim::contact {
@@ -47,6 +48,50 @@ TEST(LumenTube, RingCentresAreFoundInTheirSectionsInOrder)
         previous = s;
         start = at.ring;
     }
+}
+
+// The colon folded into a hairpin (a flattened ring at a bend, as the
+// scope's push makes at the sigmoid-descending junction): the two legs run
+// 20 mm apart, so a point 12 mm off its own leg's axis lies 8 mm from the
+// other leg, within the search's four sections. The station follows the
+// point along its own leg and does not cross the fold to the nearer one,
+// which would put the point in the other leg's lumen and push it on through
+// the wall.
+TEST(LumenTube, APointBesideAFoldStaysInItsOwnLegOfTheColon)
+{
+    LumenTube tube = restTube();
+    const int perRing = tube.nodesPerRing();
+    const int fold = 40;           // the last ring of the first leg
+    const double spacing = 0.014;  // m between ring centres
+    const double legs = 0.020;     // m between the legs' axes
+    const double radius = 0.006;   // m, a flattened lumen
+    Eigen::Matrix3Xd wall(3, tube.numRings() * perRing + 1);
+    for (int ring = 0; ring < tube.numRings(); ++ring) {
+        // Out along +x to the fold, then back along -x, 20 mm to the side.
+        const bool back = ring > fold;
+        const double x = back ? (2 * fold + 1 - ring) * spacing : ring * spacing;
+        const Eigen::Vector3d centre(x, back ? legs : 0.0, 0.0);
+        for (int j = 0; j < perRing; ++j) {
+            const double angle = 2.0 * std::numbers::pi * j / perRing;
+            wall.col(ring * perRing + j) =
+                centre + radius * Eigen::Vector3d(0.0, std::cos(angle), std::sin(angle));
+        }
+    }
+    wall.col(tube.apex()) = Eigen::Vector3d(-0.05, legs, 0.0);
+    tube.update(wall);
+
+    const int own = fold - 2;  // section (38, 39) of the first leg
+    const Eigen::Vector3d p((own + 0.5) * spacing, 0.012, 0.0);
+    const double toOther = 0.008;  // m from p to the second leg's axis
+    ASSERT_NEAR((p - Eigen::Vector3d(p.x(), legs, 0.0)).norm(), toOther, 1e-12);
+    const LumenStation at = tube.locate(p, own);
+    EXPECT_EQ(at.ring, own) << "the station crossed the fold";
+    EXPECT_NEAR(at.u, 0.5, 1e-9);
+    // From a section back on its own leg the walk reaches it, and stops there.
+    EXPECT_EQ(tube.locate(p, own - 1).ring, own);
+    const LumenWallSample w = tube.wallAt(p, at);
+    EXPECT_NEAR(w.distance, 0.012, 1e-9) << "measured from its own leg's axis";
+    EXPECT_GT(w.radial.y(), 0.99) << "pushed back towards its own axis, not on through the fold";
 }
 
 // A point driven straight out through the wall at 0.5 m/s (0.5 mm per 1 ms

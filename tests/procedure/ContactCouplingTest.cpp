@@ -111,7 +111,7 @@ TEST(ContactCoupling, DelassusMatrixIsTheRodsOwnCompliance)
     const int tip = scope.numInsertedNodes() - 1;
     const int mid = tip / 2;
     const auto contacts = contactsOn(scope, {{mid, 1e-6}, {tip, 1e-6}});
-    ContactCoupling coupling(kStiffness, 1.0, kLoopStep);
+    ContactCoupling coupling(kStiffness, 1.0, kLoopStep, 1.0);
     coupling.update(contacts, scope.rod(), 0, kRigidWall);
     ASSERT_EQ(coupling.activeNodes().size(), 2U);
     const Eigen::MatrixXd g = coupling.delassus();
@@ -136,7 +136,7 @@ TEST(ContactCoupling, OneContactIsResolvedInOneStep)
     const int tip = scope.numInsertedNodes() - 1;
     const double depth = 2e-3;  // m
     const auto contacts = contactsOn(scope, {{tip, depth}});
-    ContactCoupling coupling(kStiffness, 1.0, kLoopStep);
+    ContactCoupling coupling(kStiffness, 1.0, kLoopStep, 1.0);
     coupling.update(contacts, scope.rod(), 0, kRigidWall);
     ASSERT_EQ(coupling.activeNodes().size(), 1U);
     coupling.solveAndApply(scope.rod(), law());
@@ -151,6 +151,42 @@ TEST(ContactCoupling, OneContactIsResolvedInOneStep)
     EXPECT_GT(rise, 0.99 * depth) << "a 15 cm tip is far softer than the penalty: it gives way";
 }
 
+// With relaxation omega each solve applies the fraction omega of its load
+// change: the first solve of a contact carries omega of the Newton load, and
+// each re-solve on the shape the rod took under it moves omega of the rest
+// of the way.
+TEST(ContactCoupling, EachSolveAppliesTheRelaxedFractionOfItsLoadChange)
+{
+    Colonoscope scope = straightScope(0.15);
+    const int tip = scope.numInsertedNodes() - 1;
+    const double depth = 2e-3;  // m
+    const auto contacts = contactsOn(scope, {{tip, depth}});
+    ContactCoupling full(kStiffness, 1.0, kLoopStep, 1.0);
+    full.update(contacts, scope.rod(), 0, kRigidWall);
+    full.solveAndApply(scope.rod(), law());
+    const double newton = full.loads().col(tip).y();
+    ASSERT_GT(newton, 0.0);
+
+    const double omega = 0.3;
+    Colonoscope relaxedScope = straightScope(0.15);
+    const double start = relaxedScope.nodePositions()[static_cast<size_t>(tip)].y();
+    ContactCoupling relaxed(kStiffness, 1.0, kLoopStep, omega);
+    double expected = 0.0;
+    for (int solve = 1; solve <= 4; ++solve) {
+        // Re-measured on the shape the last load gave: the tip has risen.
+        const double risen = relaxedScope.nodePositions()[static_cast<size_t>(tip)].y() - start;
+        relaxedScope.clearLoads();
+        relaxed.update(contactsOn(relaxedScope, {{tip, depth - risen}}), relaxedScope.rod(), 0, kRigidWall);
+        relaxed.solveAndApply(relaxedScope.rod(), law());
+        expected += omega * (newton - expected);
+        EXPECT_NEAR(relaxed.loads().col(tip).y(), expected, 2e-3 * newton) << "solve " << solve;
+        EXPECT_EQ(relaxed.normalLoads()[static_cast<size_t>(tip)].y(), relaxed.loads().col(tip).y());
+        for (int s = 0; s < 40; ++s) {
+            relaxedScope.step();  // the chain's equilibrium under the applied load
+        }
+    }
+}
+
 // A contact-driven step never moves a node by more than the trust region.
 TEST(ContactCoupling, TheTrustRegionBoundsTheMotionOfOneStep)
 {
@@ -158,7 +194,7 @@ TEST(ContactCoupling, TheTrustRegionBoundsTheMotionOfOneStep)
     const int tip = scope.numInsertedNodes() - 1;
     const auto contacts = contactsOn(scope, {{tip, 0.02}});
     const double maxStep = 1e-4;  // m
-    ContactCoupling coupling(kStiffness, maxStep, kLoopStep);
+    ContactCoupling coupling(kStiffness, maxStep, kLoopStep, 1.0);
     coupling.update(contacts, scope.rod(), 0, kRigidWall);
     coupling.solveAndApply(scope.rod(), law());
     const double g = coupling.delassus()(0, 0);
@@ -177,7 +213,7 @@ TEST(ContactCoupling, ReleaseIsImmediateAndContactNeverPulls)
     Colonoscope scope = straightScope(0.15);
     const int tip = scope.numInsertedNodes() - 1;
     const auto pressed = contactsOn(scope, {{tip, 1e-3}});
-    ContactCoupling coupling(kStiffness, 1.0, kLoopStep);
+    ContactCoupling coupling(kStiffness, 1.0, kLoopStep, 1.0);
     coupling.update(pressed, scope.rod(), 0, kRigidWall);
     coupling.solveAndApply(scope.rod(), law());
     ASSERT_GT(coupling.loads().col(tip).y(), 0.0);
@@ -200,10 +236,10 @@ TEST(ContactCoupling, TheWallsComplianceAddsInSeries)
     Colonoscope scope = straightScope(0.08);
     const int tip = scope.numInsertedNodes() - 1;
     const auto contacts = contactsOn(scope, {{tip, 1e-3}});
-    ContactCoupling rigid(kStiffness, 1.0, kLoopStep);
+    ContactCoupling rigid(kStiffness, 1.0, kLoopStep, 1.0);
     rigid.update(contacts, scope.rod(), 0, kRigidWall);
     const Eigen::VectorXd soft = Eigen::VectorXd::Constant(1, 2e-3);  // m/N: a 0.5 g node at 1 ms
-    ContactCoupling compliant(kStiffness, 1.0, kLoopStep);
+    ContactCoupling compliant(kStiffness, 1.0, kLoopStep, 1.0);
     compliant.update(contacts, scope.rod(), 0, soft);
     EXPECT_NEAR(compliant.delassus()(0, 0) - rigid.delassus()(0, 0), 2e-3, 1e-12);
     rigid.solveAndApply(scope.rod(), law());
@@ -223,7 +259,7 @@ TEST(ContactCoupling, FrictionActsOnTheScopeAsOnTheWall)
     // The normal load does not depend on the slip: find it and G first.
     Colonoscope probe = straightScope(0.15);
     const auto pressed = contactsOn(probe, {{tip, 1e-3}});
-    ContactCoupling first(kStiffness, 1.0, kLoopStep);
+    ContactCoupling first(kStiffness, 1.0, kLoopStep, 1.0);
     first.update(pressed, probe.rod(), 0, kRigidWall);
     const double g = first.delassus()(0, 0);
     first.solveAndApply(probe.rod(), frictionLaw());
@@ -235,7 +271,7 @@ TEST(ContactCoupling, FrictionActsOnTheScopeAsOnTheWall)
         Colonoscope scope = straightScope(0.15);
         auto contacts = contactsOn(scope, {{tip, 1e-3}});
         contacts[static_cast<size_t>(tip)].slip = Eigen::Vector3d(speed, 0.0, 0.0);  // m/s, along the scope
-        ContactCoupling coupling(kStiffness, 1.0, kLoopStep);
+        ContactCoupling coupling(kStiffness, 1.0, kLoopStep, 1.0);
         coupling.update(contacts, scope.rod(), 0, kRigidWall);
         const Eigen::Vector3d before = scope.rod().force[static_cast<size_t>(tip)];
         coupling.solveAndApply(scope.rod(), frictionLaw());
@@ -246,6 +282,70 @@ TEST(ContactCoupling, FrictionActsOnTheScopeAsOnTheWall)
     }
     // Without slip there is no friction.
     EXPECT_EQ(probe.rod().force[static_cast<size_t>(tip)].x(), 0.0);
+}
+
+// Friction is explicit (it opposes the slip of the last step), so its stick
+// must be soft enough that the friction of all the contacts together does
+// not throw the scope back past where it slid from. Five pressed nodes near
+// the tip of a 30 cm shaft, all slipping sideways at a creeping speed: the
+// friction they get moves no node back as far as it slid in one step. With
+// each node's stick set from its own compliance alone (the friction of the
+// other four left out) it would be thrown back by more than twice its slip;
+// a shaft in the sigmoid swung from wall to wall so.
+TEST(ContactCoupling, TheFrictionOfManyContactsTogetherCannotReverseTheirSlip)
+{
+    Colonoscope scope = straightScope(0.3);
+    const int tip = scope.numInsertedNodes() - 1;
+    // Depths chosen so that every node carries the same load at the
+    // solution, d = lambda / k_c + G lambda (G their Delassus matrix).
+    std::map<int, double> pressed;
+    for (int node = tip - 4; node <= tip; ++node) {
+        pressed[node] = 1e-3;  // m
+    }
+    ContactCoupling probe(kStiffness, 1.0, kLoopStep, 1.0);
+    probe.update(contactsOn(scope, pressed), scope.rod(), 0, kRigidWall);
+    const Eigen::MatrixXd g = probe.delassus();
+    ASSERT_EQ(g.rows(), 5);
+    const double load = 0.05;  // N per node
+    for (int k = 0; k < 5; ++k) {
+        pressed[tip - 4 + k] = load / kStiffness + load * g.row(k).sum();
+    }
+    auto contacts = contactsOn(scope, pressed);
+    const double slip = 1e-4;  // m/s sideways (+z): well inside every node's stick
+    for (const auto& [node, depth] : pressed) {
+        contacts[static_cast<size_t>(node)].slip = Eigen::Vector3d(0.0, 0.0, slip);
+    }
+    ContactCoupling coupling(kStiffness, 1.0, kLoopStep, 1.0);
+    coupling.update(contacts, scope.rod(), 0, kRigidWall);
+    coupling.solveAndApply(scope.rod(), frictionLaw());
+    const std::vector<Eigen::Vector3d> before(scope.nodePositions().begin(), scope.nodePositions().end());
+    double pushedBack = 0.0;
+    for (const auto& [node, depth] : pressed) {
+        ASSERT_GT(coupling.normalLoads()[static_cast<size_t>(node)].y(), 0.0) << "node " << node;
+        ASSERT_LT(coupling.loads().col(node).z(), 0.0) << "node " << node << ": friction opposes the slip";
+    }
+    for (int s = 0; s < 40; ++s) {
+        scope.step();  // the chain's equilibrium under the applied loads
+    }
+    for (const auto& [node, depth] : pressed) {
+        const auto i = static_cast<size_t>(node);
+        pushedBack = std::max(pushedBack, -(scope.nodePositions()[i] - before[i]).z());
+    }
+    EXPECT_GT(pushedBack, 0.0);
+    EXPECT_LT(pushedBack, slip * kLoopStep) << "the friction threw a node back past where it slid from";
+    // The same friction with each node's stick from its own compliance
+    // (2 mu lambda G_bb / dt) would move node a back by
+    // v dt sum_b G_ab / (2 G_bb) (sideways compliance = G on a straight
+    // rod): more than the slip, so this arrangement tells the two apart.
+    double ownStick = 0.0;
+    for (Eigen::Index a = 0; a < g.rows(); ++a) {
+        double back = 0.0;
+        for (Eigen::Index b = 0; b < g.cols(); ++b) {
+            back += g(a, b) / (2.0 * g(b, b));
+        }
+        ownStick = std::max(ownStick, back);
+    }
+    EXPECT_GT(ownStick, 1.0);
 }
 
 }  // namespace
