@@ -71,10 +71,11 @@ struct ContactParameters {
         1.0,
         "fraction omega of the solved change of the contact loads that each contact solve applies; the rest "
         "follows over the next solves (procedure/ContactCoupling.h)",
-        "model choice: the expert's first 50 s on four patients (the default colon and generated seeds 1-3), "
-        "with the collective friction stick: tip steps longer than 2 mm (faster than 2 m/s) 11,372 with "
-        "omega 1, 4,540 with 0.5 and 1,535 with 0.3; steps with the tip more than a scope diameter into the "
-        "wall 2,254, 216 and 11; deepest 84, 32 and 15.5 mm"};
+        "model choice: build/bench/contact_stability, the expert's first 50 s on four patients (the default "
+        "colon and generated seeds 1-3): tip steps longer than 2 mm (faster than 2 m/s) 11,372 with omega 1, "
+        "4,540 with 0.5 and 1,535 with 0.3; steps with the tip more than a scope diameter into the wall "
+        "2,447, "
+        "150 and 11; deepest 81, 45 and 15.6 mm"};
     double contactStiffness = stiffnessSpec.defaultValue;
     double contactDamping = dampingSpec.defaultValue;
     double frictionCoefficient = frictionSpec.defaultValue;

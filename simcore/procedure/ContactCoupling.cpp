@@ -148,7 +148,6 @@ void ContactCoupling::solve(const std::vector<contact::LumenNodeContact>& contac
                 n = (m_normal[a] + turn / (1.0 + gain)).normalized();
             }
             const double g = n.dot(m_block[a * m + a] * n) + m_wall[a * m + a];
-            m_compliance[a] = g;
             double lambda =
                 std::max(0.0, m_lambda[a] + (m_stiffness * depth - m_lambda[a]) / (1.0 + m_stiffness * g));
             // Trust region on the contact-driven motion of this step.
@@ -191,7 +190,6 @@ void ContactCoupling::update(const std::vector<contact::LumenNodeContact>& conta
     m_normal.resize(m);
     m_lambda.resize(m);
     m_startLambda.resize(m);
-    m_compliance.resize(m);
     m_baseForce.resize(m);
     m_contacts = &contacts;
     for (size_t a = 0; a < m; ++a) {
@@ -209,7 +207,6 @@ void ContactCoupling::update(const std::vector<contact::LumenNodeContact>& conta
         m_lambda[a] = m_startLambda[a];
         m_force[a] = m_lambda[a] * c.normal;
         m_baseForce[a] = rod.force[node];
-        m_compliance[a] = c.normal.dot(m_block[a * m + a] * c.normal) + m_wall[a * m + a];
     }
     m_sweeps = 0;
 }

@@ -118,7 +118,7 @@ private:
     std::vector<Eigen::Matrix3d> m_block;  ///< C_ab, row-major over (a, b), m/N
     std::vector<double> m_wall;            ///< wall compliance shared by (a, b), m/N
     std::vector<Eigen::Vector3d> m_force, m_startForce, m_normal;
-    std::vector<double> m_lambda, m_startLambda, m_compliance;
+    std::vector<double> m_lambda, m_startLambda;
     std::vector<double> m_slipCompliance;  ///< R_a, m/N (measureSlipCompliance())
     std::vector<Eigen::Vector3d> m_baseForce;
     const std::vector<contact::LumenNodeContact>* m_contacts = nullptr;
