@@ -176,7 +176,9 @@ TEST(ContactCoupling, EachSolveAppliesTheRelaxedFractionOfItsLoadChange)
         // Re-measured on the shape the last load gave: the tip has risen.
         const double risen = relaxedScope.nodePositions()[static_cast<size_t>(tip)].y() - start;
         relaxedScope.clearLoads();
-        relaxed.update(contactsOn(relaxedScope, {{tip, depth - risen}}), relaxedScope.rod(), 0, kRigidWall);
+        // The coupling reads the contacts again in solveAndApply(): they must outlive it.
+        const auto remeasured = contactsOn(relaxedScope, {{tip, depth - risen}});
+        relaxed.update(remeasured, relaxedScope.rod(), 0, kRigidWall);
         relaxed.solveAndApply(relaxedScope.rod(), law());
         expected += omega * (newton - expected);
         EXPECT_NEAR(relaxed.loads().col(tip).y(), expected, 2e-3 * newton) << "solve " << solve;
@@ -303,7 +305,8 @@ TEST(ContactCoupling, TheFrictionOfManyContactsTogetherCannotReverseTheirSlip)
         pressed[node] = 1e-3;  // m
     }
     ContactCoupling probe(kStiffness, 1.0, kLoopStep, 1.0);
-    probe.update(contactsOn(scope, pressed), scope.rod(), 0, kRigidWall);
+    const auto first = contactsOn(scope, pressed);
+    probe.update(first, scope.rod(), 0, kRigidWall);
     const Eigen::MatrixXd g = probe.delassus();
     ASSERT_EQ(g.rows(), 5);
     const double load = 0.05;  // N per node
