@@ -73,7 +73,8 @@ public:
     /// on the current scope shape, which carries the loads of the previous
     /// update). `addedAtBase` nodes entered the rod at the base since the last
     /// call (negative when nodes left); `wallCompliance` is dt^2 / (2 m) per wall
-    /// node (0 for fixed nodes), m/N.
+    /// node (0 for fixed nodes), m/N. The coupling reads `contacts` again in
+    /// solveAndApply(): they must outlive that call.
     void update(const std::vector<contact::LumenNodeContact>& contacts, const scope::DiscreteRod& rod,
                 int addedAtBase, const Eigen::VectorXd& wallCompliance);
 
