@@ -8,7 +8,8 @@
 ///     dials, handing left/right deflection over to the up/down dial by
 ///     shaft torque (torque steering), and feeds only while the lumen is
 ///     centred; when the handle force it feels (smoothed over 0.1 s)
-///     exceeds 8 N, or the shaft stores a loop and the tip has stopped
+///     exceeds 8 N (12 N once its tip has reached the splenic flexure),
+///     or the shaft stores a loop and the tip has stopped
 ///     following it (insertion over tip advance above 2, the clinical
 ///     warning sign; a loop the tip still advances through is let be),
 ///     straightens the tip and withdraws with clockwise torque (the standard
@@ -47,9 +48,12 @@ struct OperatorStyle {
     double insertSpeed;    ///< m/s
     double withdrawSpeed;  ///< m/s after the cecum
     double forceLimit;     ///< N of handle force that makes it back off
-    bool reducesLoops;     ///< withdraws with clockwise torque when a loop forms
-    double steeringGain;   ///< 1/s: rate at which the dials follow the lumen's angular offset
-    double markDelay;      ///< s a lesion stays in view before it is marked (recognition time)
+    /// N of handle force that makes it back off once its tip has reached the
+    /// splenic flexure (see expertStyle()).
+    double flexureForceLimit;
+    bool reducesLoops;    ///< withdraws with clockwise torque when a loop forms
+    double steeringGain;  ///< 1/s: rate at which the dials follow the lumen's angular offset
+    double markDelay;     ///< s a lesion stays in view before it is marked (recognition time)
     /// Steer, then push: the dials integrate the lumen's offset and hold where
     /// it is centred, and the scope is fed only while the lumen lies within
     /// kAimedWithin of the view's centre (the expert); otherwise the dials
@@ -89,8 +93,10 @@ private:
     double m_feltForce = 0.0;  ///< the handle force as the hand feels it (smoothed), N
     double m_offCentre = 0.0;  ///< the lumen's angular offset in the view, rad
     InputSample m_input;
-    double m_reduceUntil = 0.0;    ///< insertion at which a loop reduction (or a pull-back) ends, m
-    double m_reduceFloor = 0.0;    ///< insertion at which a loop reduction ends even with the loop there, m
+    double m_reduceUntil = 0.0;  ///< insertion at which a loop reduction (or a pull-back) ends, m
+    double m_reduceFloor = 0.0;  ///< insertion at which a loop reduction ends even with the loop there, m
+    double m_furthestArc = 0.0;  ///< furthest the tip has been along the colon, m
+    geometry::Segment m_furthestSegment = geometry::Segment::Rectum;  ///< the segment there
     double m_blockedSince = -1.0;  ///< s: since when a dial is at its stop with no headway; < 0: not
     double m_blockedAt = 0.0;      ///< insertion then, m
     double m_stillSince = -1.0;    ///< s: since when the scope has not been fed kBlockedFeed; < 0: not

@@ -21,7 +21,8 @@
 // contact loads relaxed and friction's stick taken from all the contacts
 // together (procedure/ContactCoupling.h) it passes the junction at about
 // 40 s and reaches 0.48 m in 20 s with the tip at most 2.6 mm in. The
-// transverse colon, reached by 50 s, is beyond this test's 45 s.
+// transverse colon, reached by 50 s, is beyond this test's 45 s; the
+// cecum is the next test's.
 
 #include "simcore/procedure/Operator.h"
 #include "simcore/geometry/CentrelineSampling.h"
@@ -92,6 +93,54 @@ TEST(ExpertOperator, ReachesTheSigmoidDescendingJunctionInTwentySecondsAndPasses
     EXPECT_LT(outside, kStepsOutside)
         << "steps with the tip more than a scope diameter into the wall in 45 s";
     EXPECT_GT(reached, descendingStart) << "the tip passed into the descending colon within 45 s";
+}
+
+// The cecum. Backing off at 8 N of felt handle force, the expert passed the
+// splenic flexure (0.89 m at 50 s) and then backed off, re-inserted and
+// backed off again at 0.74-0.78 m of insertion until at least 150 s, its tip
+// at 0.83-0.85 m: pushing bowed the sigmoid, which took 9-11 N of the push,
+// and the tip went back round the flexure. With 12 N allowed once the tip
+// has reached the flexure (expertStyle()) the shaft gives at 56 s, the tip
+// comes back into the descending colon and then follows the shaft 1:1 into
+// the transverse colon, and on to the cecum. (The way back is not yet
+// whole: see the README's known limits.)
+TEST(ExpertOperator, ReachesTheCecumOfTheDefaultColonWithItsTipInsideTheLumen)
+{
+    constexpr int kMaxSteps = 150000;  // 150 s at 1 kHz
+    constexpr int kStepsOutside = 50;  // 50 ms with the tip more than a scope diameter in
+    const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(geometry::AnatomyParameters{});
+    const procedure::ProcedureSettings settings;
+    procedure::ProcedureLoop loop(anatomy, settings);
+    procedure::ScriptedOperator expert(procedure::expertStyle());
+    const double diameter = settings.scope.outerDiameter;
+    const auto& events = loop.recording().events;
+    const auto cecumReached = [&events] {
+        return std::any_of(events.begin(), events.end(), [](const procedure::RecordedEvent& e) {
+            return e.kind == procedure::EventKind::CecumReached;
+        });
+    };
+    int outside = 0;         // steps with the tip more than a scope diameter in
+    double deepest = 0.0;    // m
+    double peakForce = 0.0;  // N at the handle
+    for (int steps = 0; steps < kMaxSteps && !cecumReached(); ++steps) {
+        loop.step(expert.next(loop));
+        const double depth = loop.lumen().contacts().back().depth;
+        outside += depth > diameter ? 1 : 0;
+        deepest = std::max(deepest, depth);
+        peakForce = std::max(peakForce, std::abs(loop.outputs().handleForce));
+    }
+    const bool perforated = std::any_of(events.begin(), events.end(), [](const procedure::RecordedEvent& e) {
+        return e.kind == procedure::EventKind::Perforation;
+    });
+    RecordProperty("cecum_s", std::to_string(loop.time()));
+    RecordProperty("insertion_m", std::to_string(loop.trace().samples.back().insertion));
+    RecordProperty("steps_outside", std::to_string(outside));
+    RecordProperty("deepest_mm", std::to_string(deepest * 1e3));
+    RecordProperty("peak_handle_force_N", std::to_string(peakForce));
+    ASSERT_TRUE(cecumReached()) << "the tip is at " << loop.lastFrame().tipArcLength << " m of "
+                                << loop.loops().colon().length() << " m after " << loop.time() << " s";
+    EXPECT_LT(outside, kStepsOutside) << "steps with the tip more than a scope diameter into the wall";
+    EXPECT_FALSE(perforated);
 }
 
 }  // namespace
