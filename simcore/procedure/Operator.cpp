@@ -97,13 +97,8 @@ InputSample ScriptedOperator::next(const ProcedureLoop& loop)
                       ? m_feltForce + std::min(1.0, dt / m_style.feelTime) * (raw - m_feltForce)
                       : raw;
     const double force = m_feltForce;
-    if (frame.tipArcLength > m_furthestArc) {
-        m_furthestArc = frame.tipArcLength;
-        m_furthestSegment = frame.tipSegment;
-    }
-    const double forceLimit = m_furthestSegment >= geometry::Segment::SplenicFlexure
-                                  ? m_style.flexureForceLimit
-                                  : m_style.forceLimit;
+    m_reachedFlexure = m_reachedFlexure || frame.tipSegment >= geometry::Segment::SplenicFlexure;
+    const double forceLimit = m_reachedFlexure ? m_style.flexureForceLimit : m_style.forceLimit;
     const double maxInsertion = loop.scope().parameters().workingLength - 0.05;
 
     // The lumen as the camera sees it: the deformed lumen's centre 4 cm

@@ -93,17 +93,16 @@ private:
     double m_feltForce = 0.0;  ///< the handle force as the hand feels it (smoothed), N
     double m_offCentre = 0.0;  ///< the lumen's angular offset in the view, rad
     InputSample m_input;
-    double m_reduceUntil = 0.0;  ///< insertion at which a loop reduction (or a pull-back) ends, m
-    double m_reduceFloor = 0.0;  ///< insertion at which a loop reduction ends even with the loop there, m
-    double m_furthestArc = 0.0;  ///< furthest the tip has been along the colon, m
-    geometry::Segment m_furthestSegment = geometry::Segment::Rectum;  ///< the segment there
-    double m_blockedSince = -1.0;  ///< s: since when a dial is at its stop with no headway; < 0: not
-    double m_blockedAt = 0.0;      ///< insertion then, m
-    double m_stillSince = -1.0;    ///< s: since when the scope has not been fed kBlockedFeed; < 0: not
-    double m_stillAt = 0.0;        ///< insertion then, m
-    int m_pullBacks = 0;           ///< pull-backs tried at the present bend
-    double m_bendArc = -1.0;       ///< where along the colon the tip was blocked, m
-    double m_slideUntil = 0.0;     ///< insertion at which a slide-by gives up, m
+    double m_reduceUntil = 0.0;     ///< insertion at which a loop reduction (or a pull-back) ends, m
+    double m_reduceFloor = 0.0;     ///< insertion at which a loop reduction ends even with the loop there, m
+    bool m_reachedFlexure = false;  ///< the tip has been in the splenic flexure or beyond
+    double m_blockedSince = -1.0;   ///< s: since when a dial is at its stop with no headway; < 0: not
+    double m_blockedAt = 0.0;       ///< insertion then, m
+    double m_stillSince = -1.0;     ///< s: since when the scope has not been fed kBlockedFeed; < 0: not
+    double m_stillAt = 0.0;         ///< insertion then, m
+    int m_pullBacks = 0;            ///< pull-backs tried at the present bend
+    double m_bendArc = -1.0;        ///< where along the colon the tip was blocked, m
+    double m_slideUntil = 0.0;      ///< insertion at which a slide-by gives up, m
     bool m_finished = false;
     std::array<double, 32> m_inViewSince{};  ///< s, per lesion; negative while out of view
     std::uint32_t m_marked = 0;              ///< lesions already marked
