@@ -1,6 +1,7 @@
 #include "simcore/contact/LumenContact.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace colonosim::contact {
 
@@ -11,6 +12,9 @@ namespace {
 // up to about two sections apart on an unpleated colon.
 constexpr int kHistoryWindow = 1;
 constexpr int kNeighbourWindow = 4;
+/// m: the closed end's cone is taken at least this high (a flattened cap
+/// still turns the normal onto the axis).
+constexpr double kMinCapHeight = 1e-3;
 }  // namespace
 
 LumenContact::LumenContact(const geometry::ColonAnatomy& anatomy, const ContactParameters& parameters)
@@ -56,19 +60,24 @@ const std::vector<LumenNodeContact>& LumenContact::compute(const Eigen::Matrix3X
         c.scopeRadius = radius;
         c.wallNodes = w.nodes;
         c.weights = w.weights;
-        c.endCap = false;
-        if (c.station.beyondEnd) {
-            const double axial = m_tube.height(lastRing, p) + radius - m_tube.endHeight();
-            if (axial > c.depth) {
-                c.depth = axial;
-                c.normal = -m_tube.axis(lastRing);
-                c.wallNodes = {m_tube.apex(), m_tube.apex(), m_tube.apex(), m_tube.apex()};
-                c.weights = {1.0, 0.0, 0.0, 0.0};
-                c.endCap = true;
-                c.lever = w.wallRadius;
-                c.wallAxis = -m_tube.axis(lastRing);
-                c.wallCentre = m_tube.centre(lastRing) + m_tube.endHeight() * m_tube.axis(lastRing);
-            }
+        c.endCap = c.station.beyondEnd;
+        if (c.endCap) {
+            // The side wall's part on the dome ring and the cone's on the
+            // apex and the same two nodes, blended as the depths are.
+            c.capCentre = m_tube.centre(lastRing);
+            c.capAxis = m_tube.axis(lastRing);
+            c.capHeight = std::max(m_tube.endHeight(), kMinCapHeight);
+            Eigen::Vector3d n;
+            double side = 0.0;
+            double toApex = 0.0;
+            c.depth = c.depthAt(p, n, side, toApex);
+            c.normal = n;
+            const double ring = w.weights[2] + w.weights[3];
+            const double f = ring > 0.0 ? w.weights[3] / ring : 0.0;
+            const double onRing = 1.0 - (1.0 - side) * toApex;
+            c.wallNodes = {w.nodes[2], w.nodes[3], m_tube.apex(), m_tube.apex()};
+            c.weights = {onRing * (1.0 - f), onRing * f, 1.0 - onRing, 0.0};
+            c.lever = w.wallRadius;
         }
         Eigen::Vector3d wallVelocity = Eigen::Vector3d::Zero();
         for (size_t k = 0; k < 4; ++k) {
@@ -82,15 +91,47 @@ const std::vector<LumenNodeContact>& LumenContact::compute(const Eigen::Matrix3X
 
 double LumenNodeContact::depthAt(const Eigen::Vector3d& x, Eigen::Vector3d& n) const
 {
-    if (endCap) {
-        n = wallAxis;
-        return scopeRadius - (x - wallCentre).dot(wallAxis);
-    }
+    double side = 0.0;
+    double toApex = 0.0;
+    return depthAt(x, n, side, toApex);
+}
+
+double LumenNodeContact::depthAt(const Eigen::Vector3d& x, Eigen::Vector3d& n, double& side,
+                                 double& toApex) const
+{
     Eigen::Vector3d rho = x - wallCentre;
     rho -= rho.dot(wallAxis) * wallAxis;
     const double d = rho.norm();
-    n = d > 0.0 ? Eigen::Vector3d(-rho / d) : normal;
-    return d + scopeRadius - wallRadius;
+    const Eigen::Vector3d radial = d > 0.0 ? Eigen::Vector3d(rho / d) : Eigen::Vector3d(-normal);
+    n = -radial;
+    const double sideDepth = d + scopeRadius - wallRadius;
+    side = 1.0;
+    toApex = 0.0;
+    if (!endCap) {
+        return sideDepth;
+    }
+    // The cone from the dome ring (radius a) to the apex (height b): the
+    // node's signed distance past it, in the plane of the axis and the node.
+    const Eigen::Vector3d rel = x - capCentre;
+    const double h = rel.dot(capAxis);
+    Eigen::Vector3d across = rel - h * capAxis;
+    const double rhoCap = across.norm();
+    const Eigen::Vector3d e = rhoCap > 0.0 ? Eigen::Vector3d(across / rhoCap) : radial;
+    const double a = wallRadius;
+    const double b = capHeight;
+    const double slant = std::hypot(a, b);
+    const double capDepth = scopeRadius + ((rhoCap - a) * b + h * a) / slant;
+    const Eigen::Vector3d capNormal = -(b * e + a * capAxis) / slant;
+    toApex = a > 0.0 ? std::clamp(1.0 - rhoCap / a, 0.0, 1.0) : 1.0;
+    // Smooth maximum over a width of the scope's radius: the depth is
+    // (1 - s) side + s cap + k s (1 - s), whose gradient is
+    // (1 - s) grad side + s grad cap.
+    const double k = std::max(scopeRadius, kMinCapHeight);
+    const double s = std::clamp(0.5 + 0.5 * (capDepth - sideDepth) / k, 0.0, 1.0);
+    side = 1.0 - s;
+    const Eigen::Vector3d blended = (1.0 - s) * n + s * capNormal;
+    n = blended.normalized();
+    return (1.0 - s) * sideDepth + s * capDepth + k * s * (1.0 - s);
 }
 
 Eigen::Vector3d LumenContact::friction(const LumenNodeContact& contact, double normalForce,

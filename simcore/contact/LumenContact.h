@@ -9,9 +9,16 @@
 /// from the lumen axis, where the wall is at radius R along the same radial
 /// direction e:
 ///   depth = d + r - R    (> 0: pressed into the wall),  normal = -e
-/// (onto the scope, towards the axis). Beyond the dome ring the closed cecal
-/// end adds an axial depth h + r - H (h the node's height past the dome
-/// ring, H the apex's), normal -a, on the apex; the deeper of the two counts.
+/// (onto the scope, towards the axis). Beyond the dome ring the lumen is
+/// closed by the cone from the dome ring (radius a) to the apex (height b
+/// past the ring's plane), as the physics mesh closes it: a node at height h
+/// and distance rho from the axis lies ((rho - a) b + h a) / sqrt(a^2 + b^2)
+/// past it, normal -(b e + a x) / sqrt(a^2 + b^2) (x the ring's axis), on the
+/// apex and the dome ring's nodes. The side wall and the cone meet at the
+/// dome ring at 70-80 degrees: the two depths are joined by a smooth maximum
+/// rounded over the scope's radius, so that the normal of a node sliding
+/// round the corner turns with it instead of jumping between the two walls
+/// (a jump past 45 degrees drops the load it carries; see ContactCoupling).
 /// Every node gets an entry, in contact or not, so the coupling releases a
 /// load as soon as the wall has moved away (depth < 0).
 ///
@@ -33,23 +40,31 @@ struct LumenNodeContact {
     double depth = 0.0;                                ///< signed, m: > 0 pressed into the wall
     Eigen::Vector3d normal = Eigen::Vector3d::Zero();  ///< unit, onto the scope, into the lumen
     Eigen::Vector3d slip = Eigen::Vector3d::Zero();    ///< tangential velocity, scope minus wall, m/s
-    double lever = 0.0;  ///< distance from the lumen axis (radial) or the apex (end cap), m: the normal turns
-                         ///< by dx / lever
+    double lever = 0.0;  ///< distance from the lumen axis (radial) or the dome ring's radius (beyond it), m:
+                         ///< the normal turns by dx / lever
     std::array<int, 4> wallNodes{};   ///< the wall point's nodes
     std::array<double, 4> weights{};  ///< their weights (sum 1)
     LumenStation station;
-    bool endCap = false;  ///< against the closed cecal end
-    // The local wall as a cylinder (axis point, unit axis, wall radius) or,
-    // for the end cap, a plane (point on it, unit normal into the lumen):
+    bool endCap = false;  ///< beyond the dome ring: the side wall and the closed end's cone
+    // The local wall as a cylinder (axis point, unit axis, wall radius) and,
+    // beyond the dome ring, the end's cone (the dome ring's centre and unit
+    // axis, and the apex's height past it; its base radius is wallRadius):
     // the contact re-measured at nearby points without a new search.
     Eigen::Vector3d wallCentre = Eigen::Vector3d::Zero();
     Eigen::Vector3d wallAxis = Eigen::Vector3d::UnitZ();
-    double wallRadius = 0.0;   ///< m (cylinder)
-    double scopeRadius = 0.0;  ///< m
+    double wallRadius = 0.0;  ///< m (cylinder; the cone's base)
+    Eigen::Vector3d capCentre = Eigen::Vector3d::Zero();
+    Eigen::Vector3d capAxis = Eigen::Vector3d::UnitZ();  ///< out of the lumen, towards the apex
+    double capHeight = 0.0;                              ///< m
+    double scopeRadius = 0.0;                            ///< m
 
     /// Signed depth at a point `x` near the node on the local wall, m; `n`
     /// receives the normal (onto the scope, into the lumen).
     [[nodiscard]] double depthAt(const Eigen::Vector3d& x, Eigen::Vector3d& n) const;
+    /// The same, with the side wall's share of the blend beyond the dome ring
+    /// (1 elsewhere) and the cone's share on its apex (0 at the dome ring, 1
+    /// on the axis).
+    double depthAt(const Eigen::Vector3d& x, Eigen::Vector3d& n, double& side, double& toApex) const;
 };
 
 class LumenContact {

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -198,6 +199,107 @@ TEST(LumenContact, ANodeIsFollowedFromItsOwnLastStationNotOnlyItsNeighbours)
     EXPECT_LT(followed.contacts()[1].depth, 0.0) << "inside the lumen";
     EXPECT_EQ(searched.contacts()[1].station.ring, 6) << "the neighbour's search reaches four sections";
     EXPECT_GT(searched.contacts()[1].depth, followed.contacts()[1].depth);
+}
+
+// The closed cecal end: the contact compute() gives a node at `p` at the
+// tip of a shaft along the ring centres from the anus (each node searches
+// around its base-side neighbour's section).
+LumenNodeContact endContact(const Eigen::Vector3d& p, double radius)
+{
+    LumenContact contact(colon(), ContactParameters{});
+    const LumenTube& tube = contact.tube();
+    const int sections = tube.numRings() - 1;
+    Eigen::Matrix3Xd scope(3, sections + 1);
+    for (int ring = 0; ring < sections; ++ring) {
+        scope.col(ring) = tube.centre(ring) + 1e-3 * tube.axis(ring);
+    }
+    scope.col(sections) = p;
+    const Eigen::Matrix3Xd& wall = colon().physicsMesh.vertices;
+    return contact
+        .compute(scope, Eigen::Matrix3Xd::Zero(3, scope.cols()), radius, wall,
+                 Eigen::Matrix3Xd::Zero(3, wall.cols()))
+        .back();
+}
+
+// Beyond the dome ring the lumen is closed by the mesh's own cone from the
+// dome ring to the apex: a point on one of its edges lies on the wall (depth
+// equal to the scope's radius), and its load goes to the apex and the dome
+// ring's node in proportion to where it lies along the edge.
+TEST(LumenContact, TheClosedEndIsTheConeFromTheDomeRingToTheApex)
+{
+    const LumenTube tube = restTube();
+    const int last = tube.numRings() - 1;
+    const Eigen::Matrix3Xd& rest = colon().physicsMesh.vertices;
+    const Eigen::Vector3d apex = rest.col(tube.apex());
+    constexpr double kScopeRadius = 0.0065;  // m
+    for (int j = 0; j < tube.nodesPerRing(); j += 3) {
+        const Eigen::Vector3d ringNode = rest.col(tube.node(last, j));
+        for (const double t : {0.2, 0.4, 0.6}) {  // from the apex towards the ring
+            const Eigen::Vector3d p = apex + t * (ringNode - apex);
+            const LumenNodeContact c = endContact(p, kScopeRadius);
+            ASSERT_TRUE(c.endCap) << "node " << j << " at " << t;
+            EXPECT_NEAR(c.depth, kScopeRadius, 1e-9) << "node " << j << " at " << t;
+            // The normal is the cone's: mostly back along the axis.
+            EXPECT_LT(c.normal.dot(tube.axis(last)), -0.9) << "node " << j << " at " << t;
+            double onApex = 0.0;
+            double onNode = 0.0;
+            double sum = 0.0;
+            for (size_t k = 0; k < 4; ++k) {
+                onApex += c.wallNodes[k] == tube.apex() ? c.weights[k] : 0.0;
+                onNode += c.wallNodes[k] == tube.node(last, j) ? c.weights[k] : 0.0;
+                sum += c.weights[k];
+            }
+            EXPECT_NEAR(sum, 1.0, 1e-12);
+            EXPECT_NEAR(onApex, 1.0 - t, 1e-9) << "node " << j << " at " << t;
+            EXPECT_NEAR(onNode, t, 1e-9) << "node " << j << " at " << t;
+        }
+    }
+}
+
+// A node pressed outwards past the dome ring, just beyond its plane, meets
+// the side wall and the end's cone at their corner (70-80 degrees apart).
+// Its normal turns with it round the rounded corner, by under 5 degrees
+// per 0.5 mm, instead of jumping from one wall to the other, which would drop
+// the load it carries; its depth grows no faster than it moves; and
+// depthAt() re-measures the same contact.
+TEST(LumenContact, TheCornerOfTheClosedEndTurnsTheNormalSmoothly)
+{
+    const LumenTube tube = restTube();
+    const int last = tube.numRings() - 1;
+    const Eigen::Vector3d axis = tube.axis(last);
+    const Eigen::Vector3d out = axis.unitOrthogonal();
+    const Eigen::Vector3d start = tube.centre(last) + 1e-3 * axis;
+    constexpr double kScopeRadius = 0.0065;  // m
+    constexpr double kStep = 0.5e-3;         // m
+    Eigen::Vector3d lastNormal = Eigen::Vector3d::Zero();
+    double lastDepth = 0.0;
+    double turnedMost = 0.0;
+    double firstDot = 0.0;
+    for (int k = 0; k <= 60; ++k) {  // 30 mm out: from inside the ring to outside the wall
+        const Eigen::Vector3d p = start + k * kStep * out;
+        const LumenNodeContact c = endContact(p, kScopeRadius);
+        ASSERT_TRUE(c.endCap) << "at " << k * kStep * 1e3 << " mm";
+        Eigen::Vector3d n;
+        EXPECT_NEAR(c.depthAt(p, n), c.depth, 1e-12);
+        EXPECT_LT((n - c.normal).norm(), 1e-12);
+        if (k == 1) {
+            firstDot = c.normal.dot(out);
+        }
+        if (k > 1) {  // (on the axis itself, the cone's apex, the normal has no side)
+            turnedMost = std::max(turnedMost, std::acos(std::clamp(c.normal.dot(lastNormal), -1.0, 1.0)));
+        }
+        if (k > 0) {
+            EXPECT_LE(c.depth - lastDepth, kStep * (1.0 + 1e-9)) << "at " << k * kStep * 1e3 << " mm";
+        }
+        lastNormal = c.normal;
+        lastDepth = c.depth;
+    }
+    // It went from the cone's normal (nearly along the axis) to the side
+    // wall's (back towards the axis), turning at most 5 degrees a step.
+    EXPECT_GT(firstDot, -0.35);
+    EXPECT_LT(lastNormal.dot(out), -0.95);
+    EXPECT_LT(turnedMost, 5.0 * std::numbers::pi / 180.0);
+    EXPECT_GT(lastDepth, 0.0);
 }
 
 // A mesh that is not a tube of rings closed by an apex is refused by name.
