@@ -12,6 +12,12 @@ namespace {
 // up to about two sections apart on an unpleated colon.
 constexpr int kHistoryWindow = 1;
 constexpr int kNeighbourWindow = 4;
+// Sections searched for the wall that holds a node whose walk was held at a
+// fold (its centre outside its own section's wall): 16 sections, 20 cm of
+// colon at rest. The expert's withdrawal on the default colon, before this
+// search, held the tip's station at section 15 while the tip lay in
+// sections 3-6: 9-12 sections away.
+constexpr int kHeldWindow = 16;
 /// m: the closed end's cone is taken at least this high (a flattened cap
 /// still turns the normal onto the axis).
 constexpr double kMinCapHeight = 1e-3;
@@ -49,8 +55,16 @@ const std::vector<LumenNodeContact>& LumenContact::compute(const Eigen::Matrix3X
         const bool known = history && j >= 0 && j < static_cast<long>(m_previousRing.size());
         c.station = known ? m_tube.locate(p, m_previousRing[static_cast<size_t>(j)], kHistoryWindow)
                           : m_tube.locate(p, neighbour, kNeighbourWindow);
+        LumenWallSample w = m_tube.wallAt(p, c.station);
+        LumenStation held;
+        if (w.distance > w.wallRadius && !c.station.beyondEnd && !c.station.beforeStart &&
+            m_tube.findHolding(p, c.station.ring, neighbour, kHeldWindow, held)) {
+            // The walk was held at a fold: on towards the neighbour's
+            // section, a section's wall holds the node.
+            c.station = held;
+            w = m_tube.wallAt(p, c.station);
+        }
         neighbour = c.station.ring;
-        const LumenWallSample w = m_tube.wallAt(p, c.station);
         c.depth = w.distance + radius - w.wallRadius;
         c.normal = -w.radial;
         c.lever = w.distance;

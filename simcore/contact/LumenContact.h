@@ -82,7 +82,15 @@ public:
     /// its base-side neighbour's (the base node around the anus). The
     /// neighbour's station alone loses its way where the colon is pleated on
     /// the shaft and consecutive nodes lie more than the search's four
-    /// sections apart. `wallMoved` false: `wall` is the one of the last call
+    /// sections apart. A node whose centre lies outside its station's wall
+    /// is searched on, up to 16 sections, for a section whose wall holds it
+    /// and that lies towards its base-side neighbour's section (the anus for
+    /// the base node): where the colon is folded back on itself the walk,
+    /// which moves only while the centre polyline comes closer, is held at
+    /// the fold's far leg, and the node would be pushed towards the wrong
+    /// part of the colon. A section away from the neighbour is never taken,
+    /// so a node pushed through its wall into a neighbouring loop is still
+    /// pushed back the way it came. `wallMoved` false: `wall` is the one of the last call
     /// and the tube's rings are not measured again.
     const std::vector<LumenNodeContact>& compute(const Eigen::Matrix3Xd& scope,
                                                  const Eigen::Matrix3Xd& scopeVelocities, double radius,

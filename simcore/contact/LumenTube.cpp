@@ -158,6 +158,42 @@ LumenStation LumenTube::locate(const Eigen::Vector3d& p, int start, int window) 
     return best;
 }
 
+bool LumenTube::holds(const Eigen::Vector3d& p, int ring, LumenStation& at) const
+{
+    if (ring < 0 || ring > m_numRings - 2) {
+        return false;
+    }
+    const Eigen::Vector3d& c0 = centre(ring);
+    const Eigen::Vector3d d = centre(ring + 1) - c0;
+    const double length2 = d.squaredNorm();
+    if (!(length2 > 0.0)) {
+        return false;
+    }
+    const double u = (p - c0).dot(d) / length2;
+    if (u < 0.0 || u > 1.0) {
+        return false;
+    }
+    at = LumenStation{};
+    at.ring = ring;
+    at.u = u;
+    const LumenWallSample w = wallAt(p, at);
+    return w.distance < w.wallRadius;
+}
+
+bool LumenTube::findHolding(const Eigen::Vector3d& p, int from, int towards, int window,
+                            LumenStation& at) const
+{
+    const int gap = std::abs(from - towards);
+    for (int offset = 1; offset <= window; ++offset) {
+        for (const int ring : {from - offset, from + offset}) {
+            if (std::abs(ring - towards) < gap && holds(p, ring, at)) {
+                return true;
+            }
+        }
+    }
+    return false;
+}
+
 void LumenTube::rayToRing(int ring, const Eigen::Vector3d& e, double& radius, int& edge,
                           double& fraction) const
 {

@@ -21,6 +21,9 @@
 /// the colon folds on itself (a flattened ring at a hairpin) the other leg
 /// of the fold can lie nearer across the wall. (The nearest point and not
 /// the bracketing ring planes, which cross on the inner side of a bend.)
+/// A walk can also be held at a fold with the point outside its section's
+/// wall while it lies inside another's a few sections on: findHolding()
+/// finds that section, and LumenContact.h says when it is taken.
 ///
 /// Wall at a station along a radial direction e (perpendicular to the local
 /// axis): the ray from each ring's centre along e meets the ring polygon at
@@ -86,6 +89,16 @@ public:
     /// reached by walking from section `start` while the distance falls, at
     /// most `window` sections.
     [[nodiscard]] LumenStation locate(const Eigen::Vector3d& p, int start, int window = 4) const;
+    /// Whether the wall of section `ring` holds `p`: p lies between the
+    /// section's two rings (its nearest point on the section is not an end)
+    /// and nearer the axis than the wall. `at` receives the station.
+    [[nodiscard]] bool holds(const Eigen::Vector3d& p, int ring, LumenStation& at) const;
+    /// The section nearest to `from` (at most `window` sections away) whose
+    /// wall holds `p` and that lies nearer to section `towards` than `from`
+    /// does; false if there is none. For a point whose walk was held at a
+    /// fold (see LumenContact.h).
+    [[nodiscard]] bool findHolding(const Eigen::Vector3d& p, int from, int towards, int window,
+                                   LumenStation& at) const;
     /// The wall seen from `p` at `station`, radially.
     [[nodiscard]] LumenWallSample wallAt(const Eigen::Vector3d& p, const LumenStation& station) const;
     /// Where a station lies along the colon at rest (material coordinate), m:

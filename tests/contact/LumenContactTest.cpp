@@ -201,6 +201,92 @@ TEST(LumenContact, ANodeIsFollowedFromItsOwnLastStationNotOnlyItsNeighbours)
     EXPECT_GT(searched.contacts()[1].depth, followed.contacts()[1].depth);
 }
 
+// The colon dragged into a Z of three legs on the withdrawal (rings 0-10 out
+// along +x, 11-20 back along -x 20 mm to the side, 21 on along +x): the tip's
+// station was on the middle leg (it went round the fold), and the colon has
+// moved so that the tip now
+// lies on the first leg's axis, in section 6. Walking from section 15 along
+// the middle leg it is held at section 14, beside it across the wall, where
+// its centre lies outside the wall (that is the diagnosis of a lost station
+// on the expert's way back, where it was then pushed towards the wrong part
+// of the colon); on towards its base-side neighbour
+// (section 5) the first leg's section 6 holds it, and that is its station.
+// A node pushed through the first leg's wall into the middle leg is not
+// moved on (the section that holds it lies away from its neighbour): it is
+// pushed back the way it came.
+TEST(LumenContact, ANodeHeldAtAFoldFindsTheSectionThatHoldsIt)
+{
+    LumenTube tube = restTube();
+    const int perRing = tube.nodesPerRing();
+    const double spacing = 0.014;  // m between ring centres
+    const double legs = 0.020;     // m between the legs' axes
+    const double radius = 0.009;   // m
+    const auto centreOf = [&](int ring) {
+        if (ring <= 10) {
+            return Eigen::Vector3d(ring * spacing, 0.0, 0.0);
+        }
+        if (ring <= 20) {
+            return Eigen::Vector3d((21 - ring) * spacing, legs, 0.0);
+        }
+        return Eigen::Vector3d((ring - 20) * spacing, 2.0 * legs, 0.0);
+    };
+    Eigen::Matrix3Xd wall(3, tube.numRings() * perRing + 1);
+    for (int ring = 0; ring < tube.numRings(); ++ring) {
+        for (int j = 0; j < perRing; ++j) {
+            const double angle = 2.0 * std::numbers::pi * j / perRing;
+            wall.col(ring * perRing + j) =
+                centreOf(ring) + radius * Eigen::Vector3d(0.0, std::cos(angle), std::sin(angle));
+        }
+    }
+    wall.col(tube.apex()) = centreOf(tube.numRings()) + Eigen::Vector3d(spacing, 0.0, 0.0);
+    const Eigen::Matrix3Xd still = Eigen::Matrix3Xd::Zero(3, wall.cols());
+    const Eigen::Matrix3Xd velocities = Eigen::Matrix3Xd::Zero(3, 2);
+    const auto midpoint = [&](int ring) {
+        return Eigen::Vector3d(0.5 * (centreOf(ring) + centreOf(ring + 1)));
+    };
+    constexpr double kScopeRadius = 0.0065;  // m
+
+    LumenContact contact(colon(), ContactParameters{});
+    Eigen::Matrix3Xd scope(3, 2);
+    scope.col(0) = midpoint(5);
+    scope.col(1) = midpoint(6);
+    contact.compute(scope, velocities, kScopeRadius, wall, still);
+    for (int ring = 6; ring < 15; ++ring) {  // the tip goes on round the fold, 0.5 mm a step
+        const Eigen::Vector3d from = midpoint(ring);
+        const Eigen::Vector3d to = midpoint(ring + 1);
+        const int steps = static_cast<int>(std::ceil((to - from).norm() / 5e-4));
+        for (int k = 1; k <= steps; ++k) {
+            scope.col(1) = from + (to - from) * (static_cast<double>(k) / steps);
+            contact.compute(scope, velocities, kScopeRadius, wall, still, 0);
+        }
+    }
+    ASSERT_EQ(contact.contacts()[1].station.ring, 15);
+    scope.col(1) = midpoint(6);
+    ASSERT_EQ(tube.locate(scope.col(1), 15, 1).ring, 14) << "the walk is held across the wall";
+    contact.compute(scope, velocities, kScopeRadius, wall, still, 0);
+    const LumenNodeContact& tip = contact.contacts()[1];
+    EXPECT_EQ(tip.station.ring, 6);
+    EXPECT_NEAR(tip.station.u, 0.5, 1e-9);
+    // On its own section's axis: the wall (a polygon of P nodes) lies
+    // between R cos(pi / P) and R from it.
+    const double inscribed = radius * std::cos(std::numbers::pi / perRing);
+    EXPECT_GE(tip.depth, kScopeRadius - radius - 1e-12);
+    EXPECT_LE(tip.depth, kScopeRadius - inscribed + 1e-12);
+
+    // Through the first leg's wall, 3 mm into the middle leg's lumen.
+    LumenContact pushed(colon(), ContactParameters{});
+    scope.col(1) = midpoint(6);
+    pushed.compute(scope, velocities, kScopeRadius, wall, still);
+    ASSERT_EQ(pushed.contacts()[1].station.ring, 6);
+    scope.col(1) = midpoint(6) + Eigen::Vector3d(0.0, legs - 0.003, 0.0);
+    pushed.compute(scope, velocities, kScopeRadius, wall, still, 0);
+    const LumenNodeContact& through = pushed.contacts()[1];
+    EXPECT_EQ(through.station.ring, 6) << "moved on into the middle leg";
+    EXPECT_GE(through.depth, legs - 0.003 + kScopeRadius - radius - 1e-12);
+    EXPECT_LE(through.depth, legs - 0.003 + kScopeRadius - inscribed + 1e-12);
+    EXPECT_LT(through.normal.y(), -0.99) << "pushed back towards the first leg's axis";
+}
+
 // The closed cecal end: the contact compute() gives a node at `p` at the
 // tip of a shaft along the ring centres from the anus (each node searches
 // around its base-side neighbour's section).
