@@ -111,6 +111,14 @@ void LumenTube::update(const Eigen::Matrix3Xd& wall)
     m_endHeight = height(m_numRings - 1, wall.col(m_apex));
 }
 
+double LumenTube::sectionFraction(const Eigen::Vector3d& p, int ring) const
+{
+    const Eigen::Vector3d& c0 = centre(ring);
+    const Eigen::Vector3d d = centre(ring + 1) - c0;
+    const double length2 = d.squaredNorm();
+    return length2 > 0.0 ? (p - c0).dot(d) / length2 : -1.0;
+}
+
 LumenStation LumenTube::locate(const Eigen::Vector3d& p, int start, int window) const
 {
     // Walk along the centre polyline from section `start` while its nearest
@@ -128,11 +136,9 @@ LumenStation LumenTube::locate(const Eigen::Vector3d& p, int start, int window) 
     const int lastSection = m_numRings - 2;
     const int from = std::clamp(start, 0, lastSection);
     const auto nearest = [&](int i, double& u) {
+        u = std::clamp(sectionFraction(p, i), 0.0, 1.0);
         const Eigen::Vector3d& c0 = centre(i);
-        const Eigen::Vector3d d = centre(i + 1) - c0;
-        const double length2 = d.squaredNorm();
-        u = std::clamp(length2 > 0.0 ? (p - c0).dot(d) / length2 : 0.0, 0.0, 1.0);
-        return (p - (c0 + u * d)).squaredNorm();
+        return (p - (c0 + u * (centre(i + 1) - c0))).squaredNorm();
     };
     LumenStation best;
     best.ring = from;
@@ -163,13 +169,7 @@ bool LumenTube::holds(const Eigen::Vector3d& p, int ring, LumenStation& at) cons
     if (ring < 0 || ring > m_numRings - 2) {
         return false;
     }
-    const Eigen::Vector3d& c0 = centre(ring);
-    const Eigen::Vector3d d = centre(ring + 1) - c0;
-    const double length2 = d.squaredNorm();
-    if (!(length2 > 0.0)) {
-        return false;
-    }
-    const double u = (p - c0).dot(d) / length2;
+    const double u = sectionFraction(p, ring);
     if (u < 0.0 || u > 1.0) {
         return false;
     }

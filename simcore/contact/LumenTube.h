@@ -111,6 +111,10 @@ public:
     [[nodiscard]] Eigen::Vector3d centreAlong(const LumenStation& from, double distance) const;
 
 private:
+    /// Fraction along section (ring, ring + 1) of `p`'s projection onto its
+    /// centre line, unclamped (-1 for a section of zero length: it holds
+    /// nothing, and its nearest point is its first ring's centre).
+    [[nodiscard]] double sectionFraction(const Eigen::Vector3d& p, int ring) const;
     /// Ray from ring `ring`'s centre along the 3-D direction `e`: radius, edge and fraction.
     void rayToRing(int ring, const Eigen::Vector3d& e, double& radius, int& edge, double& fraction) const;
 

@@ -204,13 +204,12 @@ TEST(LumenContact, ANodeIsFollowedFromItsOwnLastStationNotOnlyItsNeighbours)
 // The colon dragged into a Z of three legs on the withdrawal (rings 0-10 out
 // along +x, 11-20 back along -x 20 mm to the side, 21 on along +x): the tip's
 // station was on the middle leg (it went round the fold), and the colon has
-// moved so that the tip now
-// lies on the first leg's axis, in section 6. Walking from section 15 along
-// the middle leg it is held at section 14, beside it across the wall, where
-// its centre lies outside the wall (that is the diagnosis of a lost station
-// on the expert's way back, where it was then pushed towards the wrong part
-// of the colon); on towards its base-side neighbour
-// (section 5) the first leg's section 6 holds it, and that is its station.
+// moved so that the tip now lies on the first leg's axis, in section 6.
+// Walking from section 15 along the middle leg it is held at section 14,
+// beside it across the wall, where its centre lies outside the wall (the
+// lost station of the expert's way back, which was then pushed towards the
+// wrong part of the colon); on towards its base-side neighbour (section 5)
+// the first leg's section 6 holds it, and that is its station.
 // A node pushed through the first leg's wall into the middle leg is not
 // moved on (the section that holds it lies away from its neighbour): it is
 // pushed back the way it came.
@@ -239,6 +238,7 @@ TEST(LumenContact, ANodeHeldAtAFoldFindsTheSectionThatHoldsIt)
         }
     }
     wall.col(tube.apex()) = centreOf(tube.numRings()) + Eigen::Vector3d(spacing, 0.0, 0.0);
+    tube.update(wall);
     const Eigen::Matrix3Xd still = Eigen::Matrix3Xd::Zero(3, wall.cols());
     const Eigen::Matrix3Xd velocities = Eigen::Matrix3Xd::Zero(3, 2);
     const auto midpoint = [&](int ring) {
