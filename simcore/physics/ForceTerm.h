@@ -14,6 +14,7 @@
 
 #include <cstdint>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace colonosim::physics {
@@ -76,6 +77,12 @@ public:
     /// mesentery at its declared maximum stretch); cRow(i) likewise for D.
     virtual void addStiffnessBound(const Positions& x, Eigen::VectorXd& kRow,
                                    Eigen::VectorXd& cRow) const = 0;
+    /// Appends the pairs of distinct nodes whose stiffness block K_ij this
+    /// term can make non-zero (the static solver's preconditioner assembles
+    /// K over them; see TangentPreconditioner.h). None by default: a term
+    /// acting on each node alone, or one whose couplings come and go with
+    /// the state (contact), which then only slows that solver down.
+    virtual void addCouplings(std::vector<std::pair<int, int>>& pairs) const { (void)pairs; }
     /// Potential energy of the elastic part, J (0 for non-conservative terms).
     [[nodiscard]] virtual double potentialEnergy(const Positions& x) const = 0;
     /// True when K and D are symmetric, so the implicit solver may include

@@ -142,6 +142,13 @@ void SpringSet::addForceAndDamping(const Positions& x, const Velocities& v, Forc
     }
 }
 
+void SpringSet::addCouplings(std::vector<std::pair<int, int>>& pairs) const
+{
+    for (size_t s = 0; s < m_i.size(); ++s) {
+        pairs.emplace_back(m_i[s], m_j[s]);
+    }
+}
+
 template <bool Definite>
 void SpringSet::stiffnessProduct(const Positions& x, const Eigen::Matrix3Xd& dx, Eigen::Matrix3Xd& df) const
 {

@@ -64,6 +64,7 @@ public:
     bool linearize(const Positions& x, double h) override;
     void addSystemProduct(const Eigen::Matrix3Xd& y, Eigen::Matrix3Xd& out) const override;
     void addStiffnessBound(const Positions& x, Eigen::VectorXd& kRow, Eigen::VectorXd& cRow) const override;
+    void addCouplings(std::vector<std::pair<int, int>>& pairs) const override;
     [[nodiscard]] double potentialEnergy(const Positions& x) const override;
     void onActiveSetChanged(const std::vector<std::uint8_t>& awake) override;
 

@@ -1,8 +1,10 @@
 #pragma once
 /// \file
 /// Static equilibrium f(x) = 0 of a tissue body by a quasi-Newton method:
-/// each iteration solves (-K+) dx = f(x) by Jacobi-preconditioned conjugate
-/// gradients over the integrated nodes, then x += dx (step halved while the
+/// each iteration solves (-K+) dx = f(x) by conjugate gradients over the
+/// integrated nodes, preconditioned by -K+ itself assembled by probing and
+/// factored (TangentPreconditioner.h; by its diagonal bound where that
+/// factorisation fails), then x += dx (step halved while the
 /// residual grows; when 20 halvings do not lower it the solve stops there,
 /// stalled, at the best state found). K+ is the definite stiffness of the symmetric terms, so
 /// where springs are compressed, tethers slack or insufflation loads the wall
@@ -21,7 +23,14 @@ struct StaticResult {
     bool stalled = false;   ///< stopped because no step along the Newton direction lowered the residual
 };
 
+/// How the tangent system's conjugate gradients are preconditioned.
+enum class StaticPreconditioner {
+    Assembled,  ///< -K+ probed and factored at each iteration (the default)
+    Diagonal,   ///< the diagonal bound of -K+ (Jacobi): no setup, many more iterations
+};
+
 /// Stops when every integrated node's net force is below `forceTolerance` (N).
-StaticResult solveStaticEquilibrium(TissueBody& body, double forceTolerance, int maxIterations = 300);
+StaticResult solveStaticEquilibrium(TissueBody& body, double forceTolerance, int maxIterations = 300,
+                                    StaticPreconditioner preconditioning = StaticPreconditioner::Assembled);
 
 }  // namespace colonosim::physics

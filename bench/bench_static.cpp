@@ -1,0 +1,40 @@
+// Times the static equilibrium the procedure starts from (ProcedureLoop's
+// constructor): the default colon under gravity and insufflation, from its
+// rest shape to 1e-5 N, with the tangent system's conjugate gradients
+// preconditioned by the assembled and factored -K+ (the default) and by its
+// diagonal bound (Jacobi, the solver before). Arg 0: assembled, 1: diagonal.
+// Compare the two rows of one run; counters: Newton iterations and residual.
+
+#include "simcore/geometry/ProceduralColon.h"
+#include "simcore/physics/ColonBody.h"
+#include "simcore/physics/StaticSolver.h"
+
+#include <benchmark/benchmark.h>
+
+namespace {
+
+using namespace colonosim;
+
+void BM_StaticEquilibrium(benchmark::State& state)
+{
+    static const geometry::ColonAnatomy anatomy =
+        geometry::buildProceduralColon(geometry::AnatomyParameters{});
+    const auto preconditioning = state.range(0) == 0 ? physics::StaticPreconditioner::Assembled
+                                                     : physics::StaticPreconditioner::Diagonal;
+    physics::StaticResult result;
+    for (auto _ : state) {
+        state.PauseTiming();
+        physics::ColonBody colon =
+            physics::buildColonBody(anatomy, physics::TissueParameters{}, physics::EnvironmentParameters{},
+                                    physics::StiffnessCalibration{});
+        state.ResumeTiming();
+        result = physics::solveStaticEquilibrium(colon.body, 1e-5, 1000, preconditioning);
+        benchmark::DoNotOptimize(result);
+    }
+    state.counters["newton_iterations"] = result.iterations;
+    state.counters["residual_N"] = result.residual;
+    state.counters["converged"] = result.converged ? 1.0 : 0.0;
+}
+BENCHMARK(BM_StaticEquilibrium)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->Iterations(3);
+
+}  // namespace
