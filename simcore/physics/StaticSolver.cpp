@@ -25,7 +25,9 @@ void solveTangent(const TissueBody& body, const Forces& rhs, Eigen::Matrix3Xd& d
     const std::vector<int>& nodes = body.integratedNodes();
     Eigen::VectorXd kRow;
     Eigen::VectorXd cRow;
-    body.stiffnessBounds(kRow, cRow);
+    if (assembled == nullptr) {
+        body.stiffnessBounds(kRow, cRow);  // the diagonal bound
+    }
     const auto apply = [&](const Eigen::Matrix3Xd& y, Eigen::Matrix3Xd& out) {
         Eigen::Matrix3Xd masked = Eigen::Matrix3Xd::Zero(3, y.cols());
         for (const int i : nodes) {

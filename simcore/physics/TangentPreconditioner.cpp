@@ -89,6 +89,10 @@ void TangentPreconditioner::colour(const TissueBody& body)
         }
         colour[static_cast<size_t>(a)] = c;
     }
+    m_byColour.assign(static_cast<size_t>(m_colours), {});
+    for (int a = 0; a < n; ++a) {
+        m_byColour[static_cast<size_t>(colour[static_cast<size_t>(a)])].push_back(a);
+    }
 }
 
 void TangentPreconditioner::probe(const TissueBody& body)
@@ -99,16 +103,12 @@ void TangentPreconditioner::probe(const TissueBody& body)
 
     // One product per colour and axis: row block j of K e gives K_ji for the
     // one node i of that colour coupled to j (or j itself).
-    std::vector<std::vector<int>> byColour(static_cast<size_t>(m_colours));
-    for (int a = 0; a < n; ++a) {
-        byColour[static_cast<size_t>(colour[static_cast<size_t>(a)])].push_back(a);
-    }
     std::vector<Eigen::Triplet<double>>& entries = m_entries;
     entries.clear();
     Eigen::Matrix3Xd dx = Eigen::Matrix3Xd::Zero(3, body.numNodes());
     Eigen::Matrix3Xd df;
     for (int c = 0; c < m_colours; ++c) {
-        const std::vector<int>& members = byColour[static_cast<size_t>(c)];
+        const std::vector<int>& members = m_byColour[static_cast<size_t>(c)];
         for (int axis = 0; axis < 3; ++axis) {
             for (const int a : members) {
                 dx(axis, m_nodes[static_cast<size_t>(a)]) = 1.0;

@@ -10,7 +10,8 @@
 /// force terms' couplings, ForceTerm::addCouplings), and one product per
 /// colour and axis gives every column block of that colour at once, because
 /// each row's coupled nodes then have distinct colours. The matrix is
-/// symmetrised and factored once; the conjugate gradients it preconditions
+/// symmetrised and factored (the colouring and the factor's ordering are
+/// kept from one build to the next); the conjugate gradients it preconditions
 /// still multiply by the exact operator, so couplings no term declares (a
 /// self-contact's) only slow the convergence, they do not change the solution.
 ///
@@ -51,6 +52,7 @@ private:
     std::vector<int> m_nodes;                  ///< the integrated nodes, in order
     std::vector<std::vector<int>> m_adjacent;  ///< coupled nodes, by index into m_nodes
     std::vector<int> m_colour;                 ///< by index into m_nodes
+    std::vector<std::vector<int>> m_byColour;  ///< indices into m_nodes, per colour
     std::vector<Eigen::Triplet<double>> m_entries;
     Eigen::SparseMatrix<double> m_matrix;
     bool m_analysed = false;
