@@ -8,6 +8,7 @@
 // Seed 0 is the default colon; any other seed is a generated patient.
 
 #include "case_generator/CaseGenerator.h"
+#include "case_generator/SceneSettings.h"
 #include "case_generator/SceneSpec.h"
 #include "simcore/geometry/ProceduralColon.h"
 #include "simcore/procedure/Operator.h"
@@ -42,8 +43,7 @@ Outcome runExpert(std::uint64_t seed, double relaxation, double seconds)
     if (seed != 0) {
         const cases::SceneSpec scene = cases::toScene(cases::CaseGenerator().generate(seed));
         anatomyParameters = scene.anatomy;
-        settings.tissue = scene.tissue;
-        settings.environment = scene.environment;
+        settings = cases::procedureSettings(scene);
     }
     settings.contact.loadRelaxation = relaxation;
     const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(anatomyParameters);

@@ -1,6 +1,5 @@
 #include "simcore/procedure/LesionView.h"
 
-#include "simcore/geometry/CentrelineSampling.h"
 #include "simcore/params/Parameter.h"
 #include "simcore/render/WallVisibility.h"
 
@@ -19,24 +18,8 @@ LesionView::LesionView(const geometry::ColonAnatomy& anatomy, const std::vector<
                                      std::to_string(kMaxLesions) + "]");
     }
     const geometry::TriangleMesh& mesh = anatomy.physicsMesh;
-    const double length = anatomy.centreline.length();
     for (size_t k = 0; k < sites.size(); ++k) {
-        const LesionSite& site = sites[k];
-        const std::string name = "lesions[" + std::to_string(k) + "]";
-        if (!(site.arcLength >= 0.0 && site.arcLength <= length)) {
-            throw params::ParameterError(name + ".arcLength = " + std::to_string(site.arcLength) +
-                                         " m is outside the allowed range [0, " + std::to_string(length) +
-                                         "] m (the colon's length)");
-        }
-        if (!std::isfinite(site.angle)) {
-            throw params::ParameterError(name + ".angle = " + std::to_string(site.angle) +
-                                         " rad is not a finite angle");
-        }
-        const geometry::CentrelineSample at = geometry::sampleCentreline(anatomy.centreline, site.arcLength);
-        const Eigen::Vector3d place =
-            at.point + at.radius * (std::cos(site.angle) * at.normal + std::sin(site.angle) * at.binormal);
-        int nearest = 0;
-        (mesh.vertices.colwise() - place).colwise().squaredNorm().minCoeff(&nearest);
+        const int nearest = wallNodeAt(anatomy, sites[k], "lesions[" + std::to_string(k) + "]");
         m_node.push_back(nearest);
         std::vector<int> around;
         for (int t = 0; t < mesh.numTriangles(); ++t) {

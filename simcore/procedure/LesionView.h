@@ -14,6 +14,7 @@
 
 #include "simcore/geometry/ColonAnatomy.h"
 #include "simcore/render/RenderParameters.h"
+#include "simcore/procedure/WallSite.h"
 #include "simcore/scope/Colonoscope.h"
 
 #include <Eigen/Core>
@@ -24,10 +25,7 @@
 namespace colonosim::procedure {
 
 /// A lesion's place on the wall.
-struct LesionSite {
-    double arcLength = 0.0;  ///< m from the anus along the centreline
-    double angle = 0.0;      ///< rad, clock angle in the centreline's frame
-};
+using LesionSite = WallSite;
 
 class LesionView {
 public:

@@ -5,6 +5,7 @@
 #include <cstdlib>
 
 #include "simcore/geometry/CentrelineSampling.h"
+#include "simcore/params/Parameter.h"
 #include "simcore/physics/StaticSolver.h"
 
 #include <algorithm>
@@ -21,6 +22,22 @@ RecorderParameters withColonLength(RecorderParameters p, double length)
     return p;
 }
 
+/// The colon's build options: the adhesions' nodes, validated by name.
+physics::ColonBodyOptions colonOptions(const geometry::ColonAnatomy& anatomy, const ProcedureSettings& settings)
+{
+    if (settings.adhesions.size() > static_cast<size_t>(ProcedureSettings::kMaxAdhesions)) {
+        throw params::ParameterError("adhesions: " + std::to_string(settings.adhesions.size()) +
+                                     " adhesions is outside the allowed range [0, " +
+                                     std::to_string(ProcedureSettings::kMaxAdhesions) + "]");
+    }
+    physics::ColonBodyOptions options;
+    for (size_t k = 0; k < settings.adhesions.size(); ++k) {
+        options.adhesionNodes.push_back(
+            wallNodeAt(anatomy, settings.adhesions[k], "adhesions[" + std::to_string(k) + "]"));
+    }
+    return options;
+}
+
 DiscomfortParameters withFailureStrain(DiscomfortParameters p, double strain)
 {
     p.mesenteryFailureStrain = strain;
@@ -30,7 +47,8 @@ DiscomfortParameters withFailureStrain(DiscomfortParameters p, double strain)
 
 ProcedureLoop::ProcedureLoop(const geometry::ColonAnatomy& anatomy, const ProcedureSettings& settings)
     : m_anatomy(anatomy), m_settings(settings),
-      m_colon(physics::buildColonBody(anatomy, settings.tissue, settings.environment, settings.calibration)),
+      m_colon(physics::buildColonBody(anatomy, settings.tissue, settings.environment, settings.calibration,
+                                      colonOptions(anatomy, settings))),
       m_scope(settings.scope), m_contact(anatomy, settings.contact),
       m_coupling(settings.contact.contactStiffness, settings.contactStepLimit, settings.stepping.loopStep,
                  settings.contact.loadRelaxation),

@@ -38,6 +38,7 @@
 #include "simcore/procedure/LesionView.h"
 #include "simcore/procedure/LoopDetector.h"
 #include "simcore/procedure/Recorder.h"
+#include "simcore/procedure/WallSite.h"
 #include "simcore/render/WallSurface.h"
 #include "simcore/scope/Colonoscope.h"
 
@@ -58,6 +59,11 @@ struct ProcedureSettings {
     BleedingParameters bleeding;
     /// The case's lesions (LesionView.h), and the view they are seen by.
     std::vector<LesionSite> lesions;
+    /// The case's adhesions (prior surgery): each binds the wall node nearest
+    /// its place to where that node lies at rest, with the anchor stiffness
+    /// tissue.adhesionStiffness. At most kMaxAdhesions.
+    std::vector<WallSite> adhesions;
+    static constexpr int kMaxAdhesions = 32;
     render::RenderParameters viewing;
     double insufflationRate = 266.6;  ///< Pa/s while air (or, negative, suction) is pressed (2 mmHg/s)
     double maxInsufflation = 8000.0;  ///< Pa the insufflator never exceeds (60 mmHg)

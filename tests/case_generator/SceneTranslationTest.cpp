@@ -3,6 +3,7 @@
 // it needs (a snare only for a polypectomy).
 
 #include "case_generator/CaseGenerator.h"
+#include "case_generator/SceneSettings.h"
 #include "case_generator/SceneSpec.h"
 
 #include <gtest/gtest.h>
@@ -80,6 +81,29 @@ TEST(SceneTranslation, ComponentsFollowTheCase)
     EXPECT_TRUE(adhered.needs(SceneComponent::Adhesions));
     EXPECT_EQ(adhered.adhesions.size(), withAdhesions.adhesions.size());
     EXPECT_DOUBLE_EQ(adhered.tissue.adhesionStiffness, withAdhesions.tissue.adhesionStiffness);
+}
+
+// The procedure settings a scene sets: its wall and environment, and its
+// lesions' and adhesions' places on the wall, which the loop binds to nodes.
+TEST(SceneTranslation, TheSceneSetsTheProcedureLoopsLesionsAndAdhesions)
+{
+    Constraints both;
+    both.require = RequireExpression::parse("adhesions and lesions>=1");
+    const SceneSpec scene = toScene(CaseGenerator().generate(4, both));
+    ASSERT_FALSE(scene.adhesions.empty());
+    ASSERT_FALSE(scene.lesions.empty());
+    const procedure::ProcedureSettings settings = procedureSettings(scene);
+    EXPECT_DOUBLE_EQ(settings.tissue.adhesionStiffness, scene.tissue.adhesionStiffness);
+    EXPECT_DOUBLE_EQ(settings.environment.insufflationPressure, scene.environment.insufflationPressure);
+    ASSERT_EQ(settings.adhesions.size(), scene.adhesions.size());
+    for (size_t k = 0; k < scene.adhesions.size(); ++k) {
+        EXPECT_DOUBLE_EQ(settings.adhesions[k].arcLength, scene.adhesions[k].arcLength);
+        EXPECT_DOUBLE_EQ(settings.adhesions[k].angle, scene.adhesions[k].angle);
+    }
+    ASSERT_EQ(settings.lesions.size(), scene.lesions.size());
+    for (size_t k = 0; k < scene.lesions.size(); ++k) {
+        EXPECT_DOUBLE_EQ(settings.lesions[k].arcLength, scene.lesions[k].place.arcLength);
+    }
 }
 
 TEST(SceneTranslation, AValueOutsideTheSimulatorsRangeIsRefused)

@@ -6,6 +6,7 @@
 #include "simcore/contact/LumenTube.h"
 #include "simcore/geometry/ProceduralColon.h"
 #include "simcore/procedure/Operator.h"
+#include "tests/procedure/LoopObservation.h"
 
 #include <gtest/gtest.h>
 
@@ -23,39 +24,10 @@ using procedure::InputSample;
 using procedure::ProcedureLoop;
 using procedure::ProcedureSettings;
 
-const geometry::ColonAnatomy& defaultColon()
-{
-    static const geometry::ColonAnatomy anatomy =
-        geometry::buildProceduralColon(geometry::AnatomyParameters{});
-    return anatomy;
-}
-
-struct RunSummary {
-    double peakHandleForce = 0.0;  ///< N
-    double peakLoad = 0.0;         ///< N, largest contact load on one scope node
-    bool finite = true;
-};
-
-void observe(const ProcedureLoop& loop, RunSummary& summary)
-{
-    const procedure::ProcedureOutputs& out = loop.outputs();
-    summary.finite = summary.finite && std::isfinite(out.handleForce) && std::isfinite(out.handleTorque) &&
-                     out.tip.position.allFinite() && loop.colon().body.positions().allFinite();
-    summary.peakHandleForce = std::max(summary.peakHandleForce, std::abs(out.handleForce));
-    for (const Eigen::Vector3d& p : loop.scope().nodePositions()) {
-        summary.finite = summary.finite && p.allFinite();
-    }
-}
-
-RunSummary runOperator(ProcedureLoop& loop, procedure::Operator& driver, int steps)
-{
-    RunSummary summary;
-    for (int s = 0; s < steps && !driver.finished(); ++s) {
-        loop.step(driver.next(loop));
-        observe(loop, summary);
-    }
-    return summary;
-}
+using looptest::defaultColon;
+using looptest::observe;
+using looptest::runOperator;
+using looptest::RunSummary;
 
 // Three seconds of the expert: the scope reaches the rectal curve and touches
 // the wall. No tissue step is rejected, nothing is non-finite, and the handle

@@ -2,6 +2,7 @@
 #include "trainer_ui/cli/CaseArgument.h"
 
 #include "case_generator/CaseReader.h"
+#include "case_generator/SceneSettings.h"
 #include "case_generator/SceneSpec.h"
 #include "simcore/geometry/ProceduralColon.h"
 #include "trainer_ui/cli/CaseArgument.h"
@@ -27,7 +28,7 @@ std::shared_ptr<const ProcedureScene> buildScene(const std::optional<std::string
         }
         const cases::SceneSpec spec = cases::toScene(*read.value);
         anatomyParameters = spec.anatomy;
-        scene->settings = cli::procedureSettingsFor(spec);
+        scene->settings = cases::procedureSettings(spec);
         findings = cli::findingsOf(spec);
         scene->lesionsPresent = static_cast<int>(read.value->lesions.size());
         scene->theCase = std::move(read.value);

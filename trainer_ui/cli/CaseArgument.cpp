@@ -18,15 +18,4 @@ cases::Case readCaseArgument(const std::string& path)
     return std::move(*read.value);
 }
 
-procedure::ProcedureSettings procedureSettingsFor(const cases::SceneSpec& scene)
-{
-    procedure::ProcedureSettings settings;
-    settings.tissue = scene.tissue;
-    settings.environment = scene.environment;
-    for (const cases::SceneLesion& lesion : scene.lesions) {
-        settings.lesions.push_back(procedure::LesionSite{lesion.place.arcLength, lesion.place.angle});
-    }
-    return settings;
-}
-
 }  // namespace colonosim::cli

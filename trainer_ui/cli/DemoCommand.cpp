@@ -14,6 +14,7 @@
 
 #include "case_generator/CaseGenerator.h"
 #include "case_generator/CaseWriter.h"
+#include "case_generator/SceneSettings.h"
 #include "case_generator/SceneSpec.h"
 #include "db/Password.h"
 #include "scoring/SessionMetrics.h"
@@ -147,7 +148,7 @@ int runDemo(std::span<char* const> args)
 
     // 2. the expert operator
     const cases::SceneSpec scene = cases::toScene(theCase);
-    const procedure::ProcedureSettings settings = procedureSettingsFor(scene);
+    const procedure::ProcedureSettings settings = cases::procedureSettings(scene);
     const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(scene.anatomy);
     procedure::ProcedureLoop loop(anatomy, settings);
     const qint64 session = open.records->beginSession(student, caseId, kDemoTask, "scripted:expert");

@@ -9,6 +9,7 @@
 /// requested state, which then settles for 0.2 s; the wall is the colon's
 /// physics mesh mapped onto the visual mesh.
 
+#include "case_generator/SceneSettings.h"
 #include "case_generator/SceneSpec.h"
 #include "simcore/geometry/MeshMapping.h"
 #include "simcore/geometry/ProceduralColon.h"
@@ -168,7 +169,7 @@ int runRender(std::span<char* const> args)
         const cases::Case theCase = readCaseArgument(*caseFile);
         const cases::SceneSpec scene = cases::toScene(theCase);
         anatomyParameters = scene.anatomy;
-        settings = procedureSettingsFor(scene);
+        settings = cases::procedureSettings(scene);
         findings = findingsOf(scene);
     }
 

@@ -9,6 +9,7 @@
 /// as running before the first step, and completed in one transaction with its trace, recording, events,
 /// metrics, scores and the user's progress (see RecordsAccess.h for authentication).
 
+#include "case_generator/SceneSettings.h"
 #include "case_generator/SceneSpec.h"
 #include "scoring/SessionMetrics.h"
 #include "simcore/devices/Gamepad.h"
@@ -128,7 +129,7 @@ int runProcedure(std::span<char* const> args)
     const std::string task = checkTask(line.value("--task").value_or("navigation-straight"));
 
     // A generated case sets the anatomy, the wall, the environment and the
-    // lesions' places (procedureSettingsFor).
+    // lesions' and adhesions' places (cases::procedureSettings).
     procedure::ProcedureSettings settings;
     geometry::AnatomyParameters anatomyParameters;
     int lesionsPresent = 0;
@@ -137,7 +138,7 @@ int runProcedure(std::span<char* const> args)
         lesionsPresent = static_cast<int>(theCase.lesions.size());
         const cases::SceneSpec scene = cases::toScene(theCase);
         anatomyParameters = scene.anatomy;
-        settings = procedureSettingsFor(scene);
+        settings = cases::procedureSettings(scene);
     }
     const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(anatomyParameters);
     procedure::ProcedureLoop loop(anatomy, settings);
