@@ -6,6 +6,94 @@
 
 namespace colonosim::scope {
 
+namespace {
+
+/// A frame C held in registers along the chain of eqs 6-7, split as Eigen
+/// evaluates a Matrix3d product with two-lane packets: rows 0-1 of each
+/// column as one Vector2d, row 2 as a scalar. Read back from `frame`, each
+/// link of the chain would first wait for the store of the one before; and a
+/// Matrix3d local is copied through memory in 16-byte pieces that straddle
+/// those halves, which the processor cannot forward from the stores (both
+/// measured slower than the old loop).
+struct SplitFrame {
+    Eigen::Vector2d top[3];
+    double bottom[3];
+
+    static SplitFrame of(const Eigen::Matrix3d& c)
+    {
+        SplitFrame s;
+        for (int j = 0; j < 3; ++j) {
+            s.top[j] = c.col(j).head<2>();
+            s.bottom[j] = c(2, j);
+        }
+        return s;
+    }
+
+    void store(Eigen::Matrix3d& c) const
+    {
+        for (int j = 0; j < 3; ++j) {
+            c.col(j).head<2>() = top[j];
+            c(2, j) = bottom[j];
+        }
+    }
+};
+
+/// c * r with the operations of Eigen's own Matrix3d product, in its order
+/// (bit for bit; tests/scope/ChainSolverBitTest.cpp holds it to Eigen's
+/// product): rows 0-1 of a column are one packet accumulated left to right,
+/// (p0 + p1) + p2; row 2 is a scalar reduction, p0 + (p1 + p2). Forced
+/// inline: out of line, GCC passes the SplitFrame through memory.
+[[gnu::always_inline]] inline SplitFrame times(const SplitFrame& c, const Eigen::Matrix3d& r)
+{
+    SplitFrame out;
+    for (int j = 0; j < 3; ++j) {
+        out.top[j] = (c.top[0] * r(0, j) + c.top[1] * r(1, j)) + c.top[2] * r(2, j);
+        out.bottom[j] = c.bottom[0] * r(0, j) + (c.bottom[1] * r(1, j) + c.bottom[2] * r(2, j));
+    }
+    return out;
+}
+
+// rebuild() in three passes over the joints. The first holds the sin/cos
+// calls of the larger angles: within the others, each call would spill the
+// registers of their arithmetic, and of the frame chain.
+
+/// Rodrigues' (a, b) of every joint.
+void updateRodrigues(DiscreteRod& rod)
+{
+    const size_t n = rod.theta.size();
+    for (size_t i = 0; i < n; ++i) {
+        rod.rodrigues[i] = rodriguesCoefficients(rod.theta[i].squaredNorm());
+    }
+}
+
+/// R(Theta_k) of every joint, from its (a, b).
+void updateRotations(DiscreteRod& rod)
+{
+    const size_t n = rod.theta.size();
+    for (size_t i = 0; i < n; ++i) {
+        rod.rotation[i] = rotationFromCoefficients(rod.theta[i], rod.rodrigues[i]);
+    }
+}
+
+/// Eqs 6-7 from the rotations, from the base to the tip.
+void chainFrames(DiscreteRod& rod)
+{
+    const size_t n = rod.theta.size();
+    Eigen::Vector3d x = rod.basePosition + rod.stubLength * rod.baseFrame.col(2);
+    SplitFrame before = SplitFrame::of(rod.baseFrame);
+    for (size_t i = 0; i < n; ++i) {
+        rod.position[i] = x;
+        // C_k = (C_{k-1} D_k) R_k, in that order: the dial is applied first.
+        const SplitFrame dialled = rod.hasDial[i] ? times(before, rod.dial[i]) : before;
+        const SplitFrame current = times(dialled, rod.rotation[i]);
+        current.store(rod.frame[i]);
+        x += rod.elementLength * rod.frame[i].col(2);
+        before = current;
+    }
+}
+
+}  // namespace
+
 void DiscreteRod::reset(int numNodes, double length, double flexuralRigidity, double torsionalRigidity,
                         int capacity)
 {
@@ -14,10 +102,12 @@ void DiscreteRod::reset(int numNodes, double length, double flexuralRigidity, do
         v->reserve(cap);
         v->assign(static_cast<size_t>(numNodes), Eigen::Vector3d::Zero());
     }
-    for (auto* m : {&dial, &frame}) {
+    for (auto* m : {&dial, &frame, &rotation}) {
         m->reserve(cap);
         m->assign(static_cast<size_t>(numNodes), Eigen::Matrix3d::Identity());
     }
+    rodrigues.reserve(cap);
+    rodrigues.assign(static_cast<size_t>(numNodes), Eigen::Array2d::Zero());
     hasDial.reserve(cap);
     hasDial.assign(static_cast<size_t>(numNodes), 0);
     elementLength = numNodes > 1 ? length / (numNodes - 1) : length;
@@ -74,22 +164,16 @@ void DiscreteRod::resizeAtBase(int numNodes)
     thetaStart = theta;
     position.resize(n);
     frame.resize(n);
+    rodrigues.resize(n);
+    rotation.resize(n);
     rebuild();
 }
 
 void DiscreteRod::rebuild()
 {
-    const int n = numNodes();
-    Eigen::Vector3d x = basePosition + stubLength * baseFrame.col(2);
-    const Eigen::Matrix3d* before = &baseFrame;
-    for (int k = 0; k < n; ++k) {
-        const auto i = static_cast<size_t>(k);
-        position[i] = x;
-        const Eigen::Matrix3d r = rotationFromVector(theta[i]);
-        frame[i].noalias() = hasDial[i] ? Eigen::Matrix3d(*before * dial[i]) * r : *before * r;
-        x += elementLength * frame[i].col(2);
-        before = &frame[i];
-    }
+    updateRodrigues(*this);
+    updateRotations(*this);
+    chainFrames(*this);
 }
 
 void DiscreteRod::clearLoads()

@@ -54,6 +54,9 @@ struct DiscreteRod {
     std::vector<Eigen::Vector3d> torque;    ///< per node, N m
     std::vector<Eigen::Vector3d> position;  ///< x_k, m (derived)
     std::vector<Eigen::Matrix3d> frame;     ///< C_k; C_{n-1} is the tip frame (derived)
+    /// Rodrigues' coefficients (a, b) of R(Theta_k) (derived; see Rotation.h).
+    std::vector<Eigen::Array2d> rodrigues;
+    std::vector<Eigen::Matrix3d> rotation;  ///< R(Theta_k) (derived)
     /// D_k, the step's damping of joint k, N m/rad (0: quasi-static); the
     /// chain solves K Theta + D (Theta - thetaStart) = C^T M.
     std::vector<Eigen::Vector3d> damping;
@@ -75,7 +78,8 @@ struct DiscreteRod {
     /// or dropped at the base, so the deformation of each material joint is
     /// carried over. Loads are cleared.
     void resizeAtBase(int numNodes);
-    /// Eqs 6-7: positions and frames from the base to the tip.
+    /// Eqs 6-7: positions and frames from the base to the tip (and the
+    /// rotations R(Theta_k) they are built from).
     void rebuild();
     void clearLoads();
 };

@@ -28,21 +28,33 @@ namespace colonosim::scope {
     return s;
 }
 
-/// R(theta) = exp([theta]x), Rodrigues' formula.
-[[nodiscard]] inline Eigen::Matrix3d rotationFromVector(const Eigen::Vector3d& theta)
+/// Rodrigues' coefficients (a, b) of R(theta) for t2 = |theta|^2. The two
+/// are computed side by side in one Array2d, so each pair of divisions (the
+/// series' t2 / c, or sin t / t and (1 - cos t) / t2) is a single two-lane
+/// division: the same correctly rounded quotients as one at a time, in half
+/// the divider's time, which dominates this function.
+[[nodiscard]] inline Eigen::Array2d rodriguesCoefficients(double t2)
 {
-    const double t2 = theta.squaredNorm();
-    double a = 0.0;
-    double b = 0.0;
     if (t2 < 2.5e-3) {
         // t < 0.05: next omitted terms are t^10/11! and t^10/12!, below 1e-21.
-        a = 1.0 - t2 / 6.0 * (1.0 - t2 / 20.0 * (1.0 - t2 / 42.0 * (1.0 - t2 / 72.0)));
-        b = 0.5 * (1.0 - t2 / 12.0 * (1.0 - t2 / 30.0 * (1.0 - t2 / 56.0 * (1.0 - t2 / 90.0))));
-    } else {
-        const double t = std::sqrt(t2);
-        a = std::sin(t) / t;
-        b = (1.0 - std::cos(t)) / t2;
+        // a = 1 - t2/6 (1 - t2/20 (1 - t2/42 (1 - t2/72))),
+        // b = (1 - t2/12 (1 - t2/30 (1 - t2/56 (1 - t2/90)))) / 2, from the innermost bracket out.
+        Eigen::Array2d series = 1.0 - t2 / Eigen::Array2d(72.0, 90.0);
+        series = 1.0 - (t2 / Eigen::Array2d(42.0, 56.0)) * series;
+        series = 1.0 - (t2 / Eigen::Array2d(20.0, 30.0)) * series;
+        series = 1.0 - (t2 / Eigen::Array2d(6.0, 12.0)) * series;
+        return {series.x(), 0.5 * series.y()};
     }
+    const double t = std::sqrt(t2);
+    return Eigen::Array2d(std::sin(t), 1.0 - std::cos(t)) / Eigen::Array2d(t, t2);
+}
+
+/// R(theta) from its Rodrigues' coefficients ab = (a, b).
+[[nodiscard]] inline Eigen::Matrix3d rotationFromCoefficients(const Eigen::Vector3d& theta,
+                                                              const Eigen::Array2d& ab)
+{
+    const double a = ab.x();
+    const double b = ab.y();
     const double x = theta.x();
     const double y = theta.y();
     const double z = theta.z();
@@ -51,6 +63,12 @@ namespace colonosim::scope {
         a * z + b * x * y, 1.0 - b * (x * x + z * z), -a * x + b * y * z,   //
         -a * y + b * x * z, a * x + b * y * z, 1.0 - b * (x * x + y * y);
     return r;
+}
+
+/// R(theta) = exp([theta]x), Rodrigues' formula.
+[[nodiscard]] inline Eigen::Matrix3d rotationFromVector(const Eigen::Vector3d& theta)
+{
+    return rotationFromCoefficients(theta, rodriguesCoefficients(theta.squaredNorm()));
 }
 
 /// The rotation vector theta with R = exp([theta]x), |theta| <= pi.
