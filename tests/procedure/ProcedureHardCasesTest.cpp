@@ -1,0 +1,248 @@
+// Hard cases of the procedure loop that run whole procedures for seconds
+// (labelled slow: under the sanitizers the loop runs about 33 times slower).
+//   - A case's adhesions act in the loop, and an insertion pushed on against
+//     a fixed adhesion stays stable.
+//   - A scope curled in a redundant sigmoid, then twisted hard at the handle
+//     both ways, stays stable.
+
+#include "simcore/geometry/CentrelineSampling.h"
+#include "simcore/geometry/ProceduralColon.h"
+#include "simcore/physics/TissueParameters.h"
+#include "simcore/procedure/Operator.h"
+#include "simcore/procedure/ProcedureLoop.h"
+#include "simcore/procedure/WallSite.h"
+#include "tests/procedure/LoopObservation.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace colonosim;
+using looptest::defaultColon;
+using procedure::ProcedureLoop;
+using procedure::ProcedureSettings;
+using procedure::WallSite;
+
+/// m along the default colon: the middle of its sigmoid.
+double midSigmoid()
+{
+    const geometry::Centreline& colon = defaultColon().centreline;
+    double first = -1.0;
+    double last = -1.0;
+    for (double s = 0.0; s < colon.length(); s += 0.002) {
+        if (geometry::sampleCentreline(colon, s).segment == geometry::Segment::Sigmoid) {
+            first = first < 0.0 ? s : first;
+            last = s;
+        }
+    }
+    return 0.5 * (first + last);
+}
+
+/// A whole ring of the wall bound at `arc`: eight places round the clock.
+std::vector<WallSite> boundRing(double arc)
+{
+    std::vector<WallSite> sites;
+    for (int k = 0; k < 8; ++k) {
+        sites.push_back(WallSite{arc, 2.0 * std::numbers::pi * k / 8.0});
+    }
+    return sites;
+}
+
+// The adhesions' anchors act in the loop: the same mid-sigmoid ring, pulled
+// on by the novice's first 6 s, moves less when adhesions hold it (measured:
+// 131 mm free, 2.2 mm at the default adhesion stiffness of 500 N/m).
+TEST(Adhesions, AnAdhesionHoldsItsWallNodeInTheLoop)
+{
+    const std::vector<WallSite> ring = boundRing(midSigmoid());
+    std::vector<int> nodes;
+    for (size_t k = 0; k < ring.size(); ++k) {
+        nodes.push_back(procedure::wallNodeAt(defaultColon(), ring[k], "ring"));
+    }
+    double moved[2] = {0.0, 0.0};  // m, largest displacement of a ring node from the start
+    for (int withAdhesions = 0; withAdhesions < 2; ++withAdhesions) {
+        ProcedureSettings settings;
+        if (withAdhesions != 0) {
+            settings.adhesions = ring;
+        }
+        ProcedureLoop loop(defaultColon(), settings);
+        const Eigen::Matrix3Xd start = loop.colon().body.positions();
+        procedure::ScriptedOperator novice(procedure::noviceStyle());
+        for (int s = 0; s < 6000; ++s) {
+            loop.step(novice.next(loop));
+            for (const int node : nodes) {
+                moved[withAdhesions] = std::max(
+                    moved[withAdhesions], (loop.colon().body.positions().col(node) - start.col(node)).norm());
+            }
+        }
+    }
+    RecordProperty("free_mm", std::to_string(moved[0] * 1e3));
+    RecordProperty("adhered_mm", std::to_string(moved[1] * 1e3));
+    EXPECT_LT(moved[1], 0.5 * moved[0])
+        << "mm moved: free " << moved[0] * 1e3 << ", adhered " << moved[1] * 1e3;
+}
+
+// Hard case (issue 3): an insertion pushed on against a fixed adhesion. A
+// whole mid-sigmoid ring is bound at the top of the adhesion stiffness's
+// range, and the novice, which pushes through resistance at 6 cm/s without
+// waiting to aim, drives for 15 s. Asserted: everything stays finite; the
+// tissue's step check engages in few steps; the tip stays inside the lumen
+// but for a few milliseconds; the handle force stays bounded; and the ring
+// holds, within millimetres of where it started. Measured: no step check
+// engaged, the tip never more than 1.1 mm into the wall, 4.8 N at the
+// handle at most, the ring 0.44 mm from where it started, and the tip
+// 0.92 m along the colon at 15 s, past the adhesion.
+TEST(Adhesions, AnInsertionPushedAgainstAFixedAdhesionStaysStable)
+{
+    constexpr int kSteps = 15000;         // 15 s at 1 kHz
+    constexpr int kEngagedLimit = 15;     // steps in which the step check rejected a try (of 15,000)
+    constexpr int kStepsOutside = 50;     // steps with the tip more than a scope diameter in
+    constexpr double kForceLimit = 25.0;  // N at the handle: the haptic device's limit
+    constexpr double kHeld = 5e-3;        // m, how far a bound node may move
+    ProcedureSettings settings;
+    settings.tissue.adhesionStiffness = physics::TissueParameters::adhesionSpec.maxValue;
+    settings.adhesions = boundRing(midSigmoid());
+    std::vector<int> nodes;
+    for (const WallSite& site : settings.adhesions) {
+        nodes.push_back(procedure::wallNodeAt(defaultColon(), site, "ring"));
+    }
+    ProcedureLoop loop(defaultColon(), settings);
+    const Eigen::Matrix3Xd start = loop.colon().body.positions();
+    procedure::ScriptedOperator novice(procedure::noviceStyle());
+    looptest::RunSummary summary;
+    const double diameter = settings.scope.outerDiameter;
+    int engaged = 0;
+    int outside = 0;
+    double deepest = 0.0;
+    double moved = 0.0;
+    double furthest = 0.0;
+    for (int s = 0; s < kSteps; ++s) {
+        const long triesBefore = loop.tissue().rejectedSteps();
+        loop.step(novice.next(loop));
+        engaged += loop.tissue().rejectedSteps() > triesBefore ? 1 : 0;
+        looptest::observe(loop, summary);
+        const double depth = loop.lumen().contacts().back().depth;
+        outside += depth > diameter ? 1 : 0;
+        deepest = std::max(deepest, depth);
+        furthest = std::max(furthest, loop.lastFrame().tipArcLength);
+        for (const int node : nodes) {
+            moved = std::max(moved, (loop.colon().body.positions().col(node) - start.col(node)).norm());
+        }
+    }
+    RecordProperty("engaged_steps", std::to_string(engaged));
+    RecordProperty("steps_outside", std::to_string(outside));
+    RecordProperty("deepest_mm", std::to_string(deepest * 1e3));
+    RecordProperty("peak_handle_force_N", std::to_string(summary.peakHandleForce));
+    RecordProperty("ring_moved_mm", std::to_string(moved * 1e3));
+    RecordProperty("furthest_m", std::to_string(furthest));
+    EXPECT_TRUE(summary.finite);
+    EXPECT_LT(engaged, kEngagedLimit);
+    EXPECT_LT(outside, kStepsOutside) << "deepest " << deepest * 1e3 << " mm";
+    EXPECT_LT(summary.peakHandleForce, kForceLimit);
+    EXPECT_LT(moved, kHeld) << "mm the bound ring moved";
+    EXPECT_GT(furthest, midSigmoid()) << "the scope was pushed past the adhesion";
+}
+
+// Hard case (issue 3): a tight curl of the shaft under high torsion. A
+// redundant sigmoid (66 cm, as in incomplete examinations; its mesocolon
+// 8.9 cm, one SD above the mean) takes the novice's insertion for 15 s; then
+// the tip is hooked with the up/down dial at its stop and the shaft pushed on
+// at 5 cm/s while it is turned counter-clockwise at 1 rad/s for 7 s, which
+// curls it in the sigmoid by more than a whole turn (its coronal turning
+// beyond the colon's own path passes 2 pi); then, with the insertion held,
+// the handle is twisted a whole turn clockwise in 1 s and back in 1 s.
+// Asserted: everything stays finite; the tissue's step check engages in few
+// steps; while the curled shaft is twisted the tip stays inside the lumen but
+// for a few milliseconds, and it is inside at the end; the handle's force and
+// torque stay within the haptic device's limits; and the shaft really was
+// curled. Measured: no step check engaged, 14.98 N and 0.895 N m at most,
+// the shaft's turning 9.01 rad, no step outside while twisted, the tip
+// 0.17 mm in at the end. Not asserted, and in the README's known limits:
+// while the hooked tip is pushed on to curl the shaft, it is driven up to
+// 66 mm into the wall for 369 steps, as a blind push against a bend does.
+// The loop detector does not read this curl as an alpha loop (see the
+// README's known limits: the colon is carried with the shaft, so no excess
+// shaft is stored against the colon's length).
+TEST(HardCases, ACurledShaftInARedundantSigmoidTwistedHardStaysStable)
+{
+    constexpr int kNovice = 15000;        // steps of the novice's insertion
+    constexpr int kCurl = 7000;           // steps of the hooked, turning push
+    constexpr int kTwist = 2000;          // steps of the hard twist, one way and back
+    constexpr int kEngagedLimit = 25;     // steps in which the step check rejected a try
+    constexpr int kStepsOutside = 50;     // steps with the tip more than a scope diameter in
+    constexpr double kForceLimit = 25.0;  // N at the handle: the haptic device's limit
+    constexpr double kTorqueLimit = 1.0;  // N m at the handle: the CSIRO device's rotational limit
+    geometry::AnatomyParameters redundant;
+    redundant.sigmoidLength = 0.66;
+    redundant.sigmoidMesenteryHeight = 0.089;
+    const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(redundant);
+    const ProcedureSettings settings;
+    ProcedureLoop loop(anatomy, settings);
+    procedure::ScriptedOperator novice(procedure::noviceStyle());
+    looptest::RunSummary summary;
+    const double diameter = settings.scope.outerDiameter;
+    const double dt = settings.stepping.loopStep;
+    int engaged = 0;
+    int outside = 0;
+    double deepest = 0.0;
+    double peakTorque = 0.0;
+    double mostTurning = 0.0;        // rad, the shaft's coronal turning beyond the colon's path
+    std::array<int, 3> outsideIn{};  // steps outside in the insertion, the curl and the twist
+    procedure::InputSample held;
+    for (int s = 0; s < kNovice + kCurl + 2 * kTwist; ++s) {
+        procedure::InputSample input;
+        if (s < kNovice) {
+            input = novice.next(loop);
+            held = input;
+        } else {
+            const int curl = std::min(s - kNovice, kCurl);
+            input = held;
+            input.dialUpDown = 3.0;  // beyond the clinical stop: clamped there
+            input.insertion = held.insertion + 0.05 * curl * dt;
+            input.rotation = held.rotation + 1.0 * curl * dt;
+            const int twist = s - kNovice - kCurl;
+            if (twist > 0) {
+                const double turn = 2.0 * std::numbers::pi / kTwist;  // rad per step
+                input.rotation -= turn * (twist <= kTwist ? twist : 2 * kTwist - twist);
+            }
+        }
+        const long triesBefore = loop.tissue().rejectedSteps();
+        loop.step(input);
+        engaged += loop.tissue().rejectedSteps() > triesBefore ? 1 : 0;
+        looptest::observe(loop, summary);
+        const double depth = loop.lumen().contacts().back().depth;
+        outside += depth > diameter ? 1 : 0;
+        outsideIn[s < kNovice ? 0 : (s < kNovice + kCurl ? 1 : 2)] += depth > diameter ? 1 : 0;
+        deepest = std::max(deepest, depth);
+        peakTorque = std::max(peakTorque, std::abs(loop.outputs().handleTorque));
+        if (loop.loops().signals().segment == geometry::Segment::Sigmoid) {
+            mostTurning = std::max(mostTurning, loop.loops().signals().turning);
+        }
+    }
+    RecordProperty("engaged_steps", std::to_string(engaged));
+    RecordProperty("steps_outside", std::to_string(outside));
+    RecordProperty("steps_outside_by_phase", std::to_string(outsideIn[0]) + " " +
+                                                 std::to_string(outsideIn[1]) + " " +
+                                                 std::to_string(outsideIn[2]));
+    RecordProperty("end_depth_mm", std::to_string(loop.lumen().contacts().back().depth * 1e3));
+    RecordProperty("deepest_mm", std::to_string(deepest * 1e3));
+    RecordProperty("peak_handle_force_N", std::to_string(summary.peakHandleForce));
+    RecordProperty("peak_handle_torque_Nm", std::to_string(peakTorque));
+    RecordProperty("most_turning_rad", std::to_string(mostTurning));
+    EXPECT_TRUE(summary.finite);
+    EXPECT_LT(engaged, kEngagedLimit);
+    EXPECT_LT(outsideIn[2], kStepsOutside)
+        << "steps with the tip more than a scope diameter in while twisted";
+    EXPECT_LT(loop.lumen().contacts().back().depth, diameter) << "the tip is inside the lumen at the end";
+    EXPECT_LT(summary.peakHandleForce, kForceLimit);
+    EXPECT_LT(peakTorque, kTorqueLimit);
+    EXPECT_GT(mostTurning, 2.0 * std::numbers::pi) << "the shaft curled by more than a turn in the sigmoid";
+}
+
+}  // namespace
