@@ -13,8 +13,8 @@
 /// between do not hide it (see WallVisibility.h).
 
 #include "simcore/geometry/ColonAnatomy.h"
-#include "simcore/render/RenderParameters.h"
 #include "simcore/procedure/WallSite.h"
+#include "simcore/render/RenderParameters.h"
 #include "simcore/scope/Colonoscope.h"
 
 #include <Eigen/Core>

@@ -23,7 +23,8 @@ RecorderParameters withColonLength(RecorderParameters p, double length)
 }
 
 /// The colon's build options: the adhesions' nodes, validated by name.
-physics::ColonBodyOptions colonOptions(const geometry::ColonAnatomy& anatomy, const ProcedureSettings& settings)
+physics::ColonBodyOptions colonOptions(const geometry::ColonAnatomy& anatomy,
+                                       const ProcedureSettings& settings)
 {
     if (settings.adhesions.size() > static_cast<size_t>(ProcedureSettings::kMaxAdhesions)) {
         throw params::ParameterError("adhesions: " + std::to_string(settings.adhesions.size()) +
