@@ -166,9 +166,8 @@ TEST(Adhesions, AnInsertionPushedAgainstAFixedAdhesionStaysStable)
 // 0.17 mm in at the end. Not asserted, and in the README's known limits:
 // while the hooked tip is pushed on to curl the shaft, it is driven up to
 // 66 mm into the wall for 369 steps, as a blind push against a bend does.
-// The loop detector does not read this curl as an alpha loop (see the
-// README's known limits: the colon is carried with the shaft, so no excess
-// shaft is stored against the colon's length).
+// The curl is the alpha loop of MechanicalLoopTest.cpp, which follows its
+// reading and its reduction.
 TEST(HardCases, ACurledShaftInARedundantSigmoidTwistedHardStaysStable)
 {
     constexpr int kNovice = 15000;        // steps of the novice's insertion
@@ -178,12 +177,8 @@ TEST(HardCases, ACurledShaftInARedundantSigmoidTwistedHardStaysStable)
     constexpr int kStepsOutside = 50;     // steps with the tip more than a scope diameter in
     constexpr double kForceLimit = 25.0;  // N at the handle: the haptic device's limit
     constexpr double kTorqueLimit = 1.0;  // N m at the handle: the CSIRO device's rotational limit
-    geometry::AnatomyParameters redundant;
-    redundant.sigmoidLength = 0.66;
-    redundant.sigmoidMesenteryHeight = 0.089;
-    const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(redundant);
     const ProcedureSettings settings;
-    ProcedureLoop loop(anatomy, settings);
+    ProcedureLoop loop(looptest::redundantSigmoidColon(), settings);
     procedure::ScriptedOperator novice(procedure::noviceStyle());
     looptest::RunSummary summary;
     const double diameter = settings.scope.outerDiameter;
@@ -201,11 +196,7 @@ TEST(HardCases, ACurledShaftInARedundantSigmoidTwistedHardStaysStable)
             input = novice.next(loop);
             held = input;
         } else {
-            const int curl = std::min(s - kNovice, kCurl);
-            input = held;
-            input.dialUpDown = 3.0;  // beyond the clinical stop: clamped there
-            input.insertion = held.insertion + 0.05 * curl * dt;
-            input.rotation = held.rotation + 1.0 * curl * dt;
+            input = looptest::hookedCurl(held, std::min(s - kNovice, kCurl), dt);
             const int twist = s - kNovice - kCurl;
             if (twist > 0) {
                 const double turn = 2.0 * std::numbers::pi / kTwist;  // rad per step
