@@ -7,6 +7,7 @@
 //
 // Seed 0 is the default colon; any other seed is a generated patient.
 
+#include "bench/ListArgument.h"
 #include "case_generator/CaseGenerator.h"
 #include "case_generator/SceneSettings.h"
 #include "case_generator/SceneSpec.h"
@@ -65,69 +66,26 @@ Outcome runExpert(std::uint64_t seed, double relaxation, double seconds)
     return outcome;
 }
 
-std::string shortest(double value)
-{
-    std::ostringstream out;
-    out << value;
-    return out.str();
-}
-
-std::vector<double> parseList(const std::string& flag, const std::string& text, double low, double high)
-{
-    std::vector<double> values;
-    std::stringstream in(text);
-    std::string item;
-    while (std::getline(in, item, ',')) {
-        std::size_t used = 0;
-        double value = 0.0;
-        try {
-            value = std::stod(item, &used);
-        } catch (const std::exception&) {
-            used = 0;
-        }
-        if (used != item.size() || item.empty() || !(value >= low && value <= high)) {
-            throw std::invalid_argument(flag + ": value '" + item + "' is not a number in [" + shortest(low) +
-                                        ", " + shortest(high) + "]");
-        }
-        values.push_back(value);
-    }
-    if (values.empty()) {
-        throw std::invalid_argument(flag + ": no values given");
-    }
-    return values;
-}
-
 }  // namespace
 
 int main(int argc, char** argv)
 {
     double seconds = 50.0;
-    std::vector<double> seeds{0, 1, 2, 3};
+    std::vector<std::uint64_t> seeds{0, 1, 2, 3};
     std::vector<double> relaxations{1.0, 0.5, 0.3};
     try {
-        for (int i = 1; i < argc; ++i) {
-            const std::string flag = argv[i];
-            if (i + 1 >= argc) {
-                throw std::invalid_argument(flag + ": a value is needed");
-            }
-            const std::string value = argv[++i];
+        bench::forEachOption(argc, argv, [&](const std::string& flag, const std::string& value) {
             if (flag == "--seconds") {
-                seconds = parseList(flag, value, 0.001, 3600.0).front();
+                seconds = bench::parseList(flag, value, 0.001, 3600.0).front();
             } else if (flag == "--seeds") {
-                seeds = parseList(flag, value, 0.0, 1e9);
+                seeds = bench::parseSeeds(flag, value);
             } else if (flag == "--relaxation") {
-                relaxations = parseList(flag, value, 0.05, 1.0);
+                relaxations = bench::parseList(flag, value, 0.05, 1.0);
             } else {
                 throw std::invalid_argument("unknown option '" + flag +
                                             "' (allowed: --seconds, --seeds, --relaxation)");
             }
-        }
-        for (const double seed : seeds) {
-            if (seed != static_cast<double>(static_cast<std::uint64_t>(seed))) {
-                throw std::invalid_argument("--seeds: value " + shortest(seed) +
-                                            " is not a whole number in [0, 1e+09]");
-            }
-        }
+        });
     } catch (const std::exception& error) {
         std::fprintf(stderr, "contact_stability: %s\n", error.what());
         return 2;
@@ -139,10 +97,11 @@ int main(int argc, char** argv)
                 "furthest_m");
     for (const double relaxation : relaxations) {
         Outcome total;
-        for (const double seed : seeds) {
-            const Outcome o = runExpert(static_cast<std::uint64_t>(seed), relaxation, seconds);
-            std::printf("%-10.2f %-6.0f %10ld %10ld %12.1f %12.3f\n", relaxation, seed, o.fastSteps,
-                        o.outside, o.deepest * 1e3, o.furthest);
+        for (const std::uint64_t seed : seeds) {
+            const Outcome o = runExpert(seed, relaxation, seconds);
+            std::printf("%-10.2f %-6llu %10ld %10ld %12.1f %12.3f\n", relaxation,
+                        static_cast<unsigned long long>(seed), o.fastSteps, o.outside, o.deepest * 1e3,
+                        o.furthest);
             std::fflush(stdout);
             total.fastSteps += o.fastSteps;
             total.outside += o.outside;

@@ -104,7 +104,6 @@ InputSample ScriptedOperator::next(const ProcedureLoop& loop)
     // The lumen as the camera sees it: the deformed lumen's centre 4 cm
     // ahead of the tip, in the tip's frame (x = the viewer's left, y = up,
     // z = forward; see TipPose).
-    const geometry::Centreline& colon = loop.loops().colon();
     Eigen::Vector3d target = frame.tipPosition;
     if (!loop.lumen().contacts().empty()) {
         const contact::LumenStation& at = loop.lumen().contacts().back().station;
@@ -204,7 +203,7 @@ InputSample ScriptedOperator::next(const ProcedureLoop& loop)
         }
         if (backOff) {
             backOffBy(Phase::ReduceLoop, kReduceLength);
-        } else if (frame.tipArcLength >= colon.length() - 0.03 || m_input.insertion >= maxInsertion) {
+        } else if (loop.cecumReached() || m_input.insertion >= maxInsertion) {
             m_phase = Phase::Withdraw;
         } else if ((m_blockedSince >= 0.0 && loop.time() - m_blockedSince >= kBlockedFor) || still) {
             // Pull back and re-approach; after kPullBacksPerBend of those at

@@ -99,6 +99,9 @@ public:
     [[nodiscard]] const ProcedureOutputs& outputs() const { return m_outputs; }
     [[nodiscard]] const ProcedureFrame& lastFrame() const { return m_frame; }
     [[nodiscard]] const Recording& recording() const { return m_recorder.recording(); }
+    /// Whether the recording holds the cecum_reached event (the tip within
+    /// RecorderParameters::cecumDepth of the end of the colon).
+    [[nodiscard]] bool cecumReached() const { return m_recorder.cecumReached(); }
     [[nodiscard]] const InputTrace& trace() const { return m_trace; }
     [[nodiscard]] const scope::Colonoscope& scope() const { return m_scope; }
     [[nodiscard]] const physics::ColonBody& colon() const { return m_colon; }

@@ -194,6 +194,8 @@ public:
     /// An event that does not come from the frame (an input device came or went).
     void note(double time, EventKind kind, std::string detail) { event(time, kind, std::move(detail)); }
     [[nodiscard]] const Recording& recording() const { return m_recording; }
+    /// Whether the cecum_reached event has been recorded.
+    [[nodiscard]] bool cecumReached() const { return m_cecumReached; }
 
 private:
     void event(double time, EventKind kind, std::string detail = {});

@@ -1,0 +1,141 @@
+// Construct validity report: the scripted expert and the scripted novice on
+// the same generated patients, each for a set simulated time (or until it
+// has finished), scored from its recording by the scoring library. Per run:
+// the time to the cecum when it was reached, the furthest the tip got along
+// the colon, the looped time and the loops formed (with the alpha loops
+// among them), the peak handle force, and the steps with the tip more than a
+// scope diameter into the wall. Then, per metric, on how many patients the
+// expert did better than the novice.
+//
+//   construct_validity [--seconds S] [--seeds 1,2,3,...]
+//
+// Seed 0 is the default colon; any other seed is a generated patient.
+
+#include "bench/ListArgument.h"
+#include "case_generator/CaseGenerator.h"
+#include "case_generator/SceneSettings.h"
+#include "case_generator/SceneSpec.h"
+#include "scoring/SessionMetrics.h"
+#include "simcore/geometry/ProceduralColon.h"
+#include "simcore/procedure/Operator.h"
+#include "simcore/procedure/ProcedureLoop.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <cstdio>
+#include <exception>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace colonosim;
+
+struct Run {
+    double timeToCecum = -1.0;  ///< s; -1 when not reached
+    double furthest = 0.0;      ///< m along the colon
+    double colonLength = 0.0;   ///< m
+    double loopedTime = 0.0;    ///< s
+    double loops = 0.0;
+    double alphaLoops = 0.0;
+    double peakForce = 0.0;  ///< N
+    long outside = 0;        ///< steps with the tip more than a scope diameter into the wall
+};
+
+Run runOperator(std::uint64_t seed, const procedure::OperatorStyle& style, double seconds)
+{
+    procedure::ProcedureSettings settings;
+    geometry::AnatomyParameters anatomyParameters;
+    if (seed != 0) {
+        const cases::SceneSpec scene = cases::toScene(cases::CaseGenerator().generate(seed));
+        anatomyParameters = scene.anatomy;
+        settings = cases::procedureSettings(scene);
+    }
+    const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(anatomyParameters);
+    procedure::ProcedureLoop loop(anatomy, settings);
+    procedure::ScriptedOperator driver(style);
+    Run run;
+    run.colonLength = anatomy.centreline.length();
+    const auto steps = static_cast<long>(seconds / settings.stepping.loopStep);
+    for (long s = 0; s < steps && !driver.finished(); ++s) {
+        loop.step(driver.next(loop));
+        run.outside += loop.lumen().contacts().back().depth > settings.scope.outerDiameter ? 1 : 0;
+        run.furthest = std::max(run.furthest, loop.lastFrame().tipArcLength);
+    }
+    scoring::ScoringContext context;
+    context.colonLength = run.colonLength;
+    context.excessiveForce = settings.recorder.excessiveForce;
+    context.lesionsPresent = static_cast<int>(settings.lesions.size());
+    const scoring::MetricValues metrics = scoring::computeMetrics(loop.recording(), context);
+    const auto value = [&metrics](const char* name) {
+        const auto it = metrics.find(name);
+        return it == metrics.end() ? -1.0 : it->second;
+    };
+    run.timeToCecum = value("time_to_cecum");
+    run.loopedTime = value("looped_time");
+    run.loops = value("loop_count");
+    run.alphaLoops = value("loops_alpha");
+    run.peakForce = value("max_handle_force");
+    return run;
+}
+
+void printRun(const char* who, std::uint64_t seed, const Run& r)
+{
+    const std::string cecum = r.timeToCecum >= 0.0 ? bench::shortest(r.timeToCecum) : "-";
+    std::printf("%-7s %-6llu %10s %8.3f / %-6.3f %9.1f %6.0f %6.0f %10.2f %9ld\n", who,
+                static_cast<unsigned long long>(seed), cecum.c_str(), r.furthest, r.colonLength, r.loopedTime,
+                r.loops, r.alphaLoops, r.peakForce, r.outside);
+    std::fflush(stdout);
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+    double seconds = 60.0;
+    std::vector<std::uint64_t> seeds{1, 2, 3, 4, 5, 6, 7, 8, 9, 10};
+    try {
+        bench::forEachOption(argc, argv, [&](const std::string& flag, const std::string& value) {
+            if (flag == "--seconds") {
+                seconds = bench::parseList(flag, value, 0.001, 3600.0).front();
+            } else if (flag == "--seeds") {
+                seeds = bench::parseSeeds(flag, value);
+            } else {
+                throw std::invalid_argument("unknown option '" + flag + "' (allowed: --seconds, --seeds)");
+            }
+        });
+    } catch (const std::exception& error) {
+        std::fprintf(stderr, "construct_validity: %s\n", error.what());
+        return 2;
+    }
+    std::printf(
+        "expert and novice, %.1f s per run; cecum: time to cecum (s, - when not reached); furthest: "
+        "tip along the colon / colon length (m); outside: steps with the tip more than a scope diameter "
+        "into the wall\n",
+        seconds);
+    std::printf("%-7s %-6s %10s %17s %9s %6s %6s %10s %9s\n", "who", "seed", "cecum_s", "furthest_m",
+                "looped_s", "loops", "alpha", "peak_F_N", "outside");
+    int fartherOrFaster = 0;
+    int lessLooped = 0;
+    int lessForce = 0;
+    for (const std::uint64_t seed : seeds) {
+        const Run expert = runOperator(seed, procedure::expertStyle(), seconds);
+        printRun("expert", seed, expert);
+        const Run novice = runOperator(seed, procedure::noviceStyle(), seconds);
+        printRun("novice", seed, novice);
+        // Faster to the cecum; when neither or only the novice reached it, the expert counts as better only
+        // if it reached it, and not when neither did.
+        const bool expertFaster = expert.timeToCecum >= 0.0 &&
+                                  (novice.timeToCecum < 0.0 || expert.timeToCecum < novice.timeToCecum);
+        fartherOrFaster += expertFaster ? 1 : 0;
+        lessLooped += expert.loopedTime < novice.loopedTime ? 1 : 0;
+        lessForce += expert.peakForce < novice.peakForce ? 1 : 0;
+    }
+    const auto n = static_cast<int>(seeds.size());
+    std::printf(
+        "expert better on %d patients: reached the cecum faster %d / %d, less looped time %d / %d, lower "
+        "peak handle force %d / %d\n",
+        n, fartherOrFaster, n, lessLooped, n, lessForce, n);
+    return 0;
+}
