@@ -116,7 +116,7 @@ int main(int argc, char** argv)
         seconds);
     std::printf("%-7s %-6s %10s %17s %9s %6s %6s %10s %9s\n", "who", "seed", "cecum_s", "furthest_m",
                 "looped_s", "loops", "alpha", "peak_F_N", "outside");
-    int fartherOrFaster = 0;
+    int fasterToCecum = 0;
     int lessLooped = 0;
     int lessForce = 0;
     for (const std::uint64_t seed : seeds) {
@@ -124,18 +124,17 @@ int main(int argc, char** argv)
         printRun("expert", seed, expert);
         const Run novice = runOperator(seed, procedure::noviceStyle(), seconds);
         printRun("novice", seed, novice);
-        // Faster to the cecum; when neither or only the novice reached it, the expert counts as better only
-        // if it reached it, and not when neither did.
+        // Faster to the cecum: the expert reached it, and the novice did not or later.
         const bool expertFaster = expert.timeToCecum >= 0.0 &&
                                   (novice.timeToCecum < 0.0 || expert.timeToCecum < novice.timeToCecum);
-        fartherOrFaster += expertFaster ? 1 : 0;
+        fasterToCecum += expertFaster ? 1 : 0;
         lessLooped += expert.loopedTime < novice.loopedTime ? 1 : 0;
         lessForce += expert.peakForce < novice.peakForce ? 1 : 0;
     }
     const auto n = static_cast<int>(seeds.size());
     std::printf(
-        "expert better on %d patients: reached the cecum faster %d / %d, less looped time %d / %d, lower "
-        "peak handle force %d / %d\n",
-        n, fartherOrFaster, n, lessLooped, n, lessForce, n);
+        "patients where the expert did better: reached the cecum faster %d of %d, less looped time %d of %d, "
+        "lower peak handle force %d of %d\n",
+        fasterToCecum, n, lessLooped, n, lessForce, n);
     return 0;
 }

@@ -75,33 +75,9 @@ double coronalTurning(const Eigen::Matrix3Xd& polyline)
     return turning;
 }
 
-LoopDetector::LoopDetector(const geometry::Centreline& colon, double excessThreshold, int typeDwell,
-                           double steeredLength)
-    : m_colon(colon), m_threshold(excessThreshold), m_typeDwell(std::max(1, typeDwell)),
-      m_steeredLength(std::max(0.0, steeredLength))
+LoopDetector::LoopDetector(const geometry::Centreline& colon, double excessThreshold, int typeDwell)
+    : m_colon(colon), m_threshold(excessThreshold), m_typeDwell(std::max(1, typeDwell))
 {}
-
-LoopDetector::SegmentShape LoopDetector::segmentShape(const Eigen::Matrix3Xd& shaft,
-                                                      const std::vector<double>& s, Eigen::Index first,
-                                                      Eigen::Index last, Eigen::Index end) const
-{
-    // Two nodes either side, so that the crossing where the loop closes on
-    // the shaft that leads into it is included.
-    first = std::max<Eigen::Index>(0, first - 2);
-    last = std::min(end, last + 2);
-    SegmentShape shape;
-    if (last <= first) {
-        return shape;
-    }
-    const Eigen::Matrix3Xd part = shaft.middleCols(first, last - first + 1);
-    // Relative to the colon's own path over the same stretch: a shaft that
-    // merely follows a sigmoid which crosses itself in the anterior view is
-    // not looped.
-    const Eigen::Matrix3Xd path = colonPath(s[static_cast<size_t>(first)], s[static_cast<size_t>(last)]);
-    shape.crossings = std::max(0, coronalCrossings(part) - coronalCrossings(path));
-    shape.turning = coronalTurning(part) - coronalTurning(path);
-    return shape;
-}
 
 double LoopDetector::locate(const Eigen::Vector3d& p) const
 {
@@ -183,39 +159,26 @@ LoopKind LoopDetector::update(const Eigen::Matrix3Xd& shaft, double insertion,
             }
         }
     }
-    // The passive shaft ends where the steered section begins.
-    Eigen::Index end = n - 1;
-    for (double steered = 0.0; end > 0 && steered < m_steeredLength; --end) {
-        steered += (shaft.col(end) - shaft.col(end - 1)).norm();
-    }
-    // Each segment's shape; the closed loop is the one that turns most.
-    std::array<Eigen::Index, geometry::kNumSegments> firstNode{};
-    std::array<Eigen::Index, geometry::kNumSegments> lastNode{};
-    firstNode.fill(-1);
-    for (Eigen::Index i = 0; i <= end; ++i) {
-        const auto g = static_cast<size_t>(segment[static_cast<size_t>(i)]);
-        firstNode[g] = firstNode[g] < 0 ? i : firstNode[g];
-        lastNode[g] = i;
-    }
-    std::array<SegmentShape, geometry::kNumSegments> shapes{};
-    size_t turningMost = static_cast<size_t>(signals.segment);
-    for (size_t g = 0; g < shapes.size(); ++g) {
-        if (firstNode[g] >= 0) {
-            shapes[g] = segmentShape(shaft, s, firstNode[g], lastNode[g], end);
-            if (std::abs(shapes[g].turning) > std::abs(shapes[turningMost].turning)) {
-                turningMost = g;
-            }
+    // Shape of the looped part: the nodes in the worst segment, in order.
+    std::vector<int> looped;
+    for (Eigen::Index i = 0; i < n; ++i) {
+        if (segment[static_cast<size_t>(i)] == signals.segment) {
+            looped.push_back(static_cast<int>(i));
         }
     }
-    const double turningThere = std::abs(shapes[turningMost].turning);
-    const bool closedHeld = m_current == LoopKind::Alpha || m_current == LoopKind::ReverseAlpha ||
-                            m_current == LoopKind::ReverseSplenic;
-    signals.closed = turningThere >= kClosedTurning || (closedHeld && turningThere >= 0.6 * kClosedTurning);
-    if (signals.closed) {
-        signals.segment = static_cast<Segment>(turningMost);
+    // The looped part, with two nodes either side so that the crossing where
+    // the loop closes on the shaft that leads into it is included.
+    if (!looped.empty()) {
+        const Eigen::Index first = std::max<Eigen::Index>(0, looped.front() - 2);
+        const Eigen::Index last = std::min<Eigen::Index>(n - 1, looped.back() + 2);
+        const Eigen::Matrix3Xd part = shaft.middleCols(first, last - first + 1);
+        // Relative to the colon's own path over the same stretch: a shaft that
+        // merely follows a sigmoid which crosses itself in the anterior view
+        // is not looped.
+        const Eigen::Matrix3Xd path = colonPath(s[static_cast<size_t>(first)], s[static_cast<size_t>(last)]);
+        signals.crossings = std::max(0, coronalCrossings(part) - coronalCrossings(path));
+        signals.turning = coronalTurning(part) - coronalTurning(path);
     }
-    signals.crossings = shapes[static_cast<size_t>(signals.segment)].crossings;
-    signals.turning = shapes[static_cast<size_t>(signals.segment)].turning;
     signals.tipArcLength = s.back();
 
     // Paradoxical motion over the last 2 cm of insertion.
@@ -232,9 +195,8 @@ LoopKind LoopDetector::update(const Eigen::Matrix3Xd& shaft, double insertion,
     signals.tipAdvanceRatio = m_signals.tipAdvanceRatio;
 
     // Hysteresis: a loop forms above the threshold and resolves below 60% of it.
-    const bool looping =
-        signals.closed || (m_current == LoopKind::None ? signals.excessShaft > m_threshold
-                                                       : signals.excessShaft > 0.6 * m_threshold);
+    const bool looping = m_current == LoopKind::None ? signals.excessShaft > m_threshold
+                                                     : signals.excessShaft > 0.6 * m_threshold;
     signals.reading = looping ? classify(signals) : LoopKind::None;
     m_signals = signals;
     if (!looping || m_current == LoopKind::None) {
@@ -256,7 +218,7 @@ LoopKind LoopDetector::update(const Eigen::Matrix3Xd& shaft, double insertion,
 
 LoopKind LoopDetector::classify(const LoopSignals& signals)
 {
-    const bool crossed = signals.crossings > 0 || signals.closed;
+    const bool crossed = signals.crossings > 0;
     switch (signals.segment) {
     case Segment::Rectum:
     case Segment::Sigmoid:

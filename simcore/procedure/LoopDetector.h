@@ -13,15 +13,6 @@
 ///     (seen from the front, x left / z up), and the handedness of the
 ///     looped part (sign of its projected turning), both counted beyond
 ///     those of the colon's own path over the same stretch.
-///   - closed loops: in each segment, the shaft's coronal turning beyond the
-///     colon's own path there. A shaft that turns a whole loop more than its
-///     colon (at least kClosedTurning) is looped even when it stores no
-///     excess shaft: in a mobile sigmoid the colon is carried round with the
-///     shaft, and its length keeps up with the shaft's (the loop magnetic
-///     endoscope imaging shows, which the excess alone cannot see).
-/// The distal `steeredLength` of the shaft, the bending section the dials
-/// curl, is left out of the crossings and the turning: a tip hooked round a
-/// flexure turns up to 180 degrees there without any loop in the shaft.
 /// Each node is located along the colon near its predecessor (a window of
 /// -5/+15 cm), so loops never jump to a part of the colon close in space.
 /// Classification, by the segment holding the most excess shaft:
@@ -30,23 +21,20 @@
 ///   sigmoid without a crossing: N;
 ///   transverse (or hepatic flexure): GammaDeepTransverse;
 ///   splenic flexure with a crossing: ReverseSplenic;
-/// and None while the excess is below the threshold and no segment holds a
-/// closed loop. A closed loop counts as crossed, and it is placed in its
-/// own segment (the one that turns most), whatever the excess elsewhere.
+/// and None while the excess is below the threshold.
 /// Hysteresis: a loop forms above the threshold and resolves below 60% of
-/// it, and a closed loop likewise on the turning; once formed, its type changes only when another type has
-/// been read in `typeDwell` analyses in a row (a shaft on the border of two segments, or with a crossing that
-/// comes and goes, would otherwise flicker between types from one analysis to the next, and each flicker
-/// would be a new loop event in the recording).
+/// it; once formed, its type changes only when another type has been read in
+/// `typeDwell` analyses in a row (a shaft on the border of two segments, or
+/// with a crossing that comes and goes, would otherwise flicker between
+/// types from one analysis to the next, and each flicker would be a new loop
+/// event in the recording).
 
 #include "simcore/geometry/Centreline.h"
 
 #include <Eigen/Core>
 
-#include <numbers>
 #include <span>
 #include <string_view>
-#include <vector>
 
 namespace colonosim::procedure {
 
@@ -62,25 +50,17 @@ struct LoopSignals {
         0.0;  ///< signed coronal turning of the shaft in that segment, rad (+ = counter-clockwise)
     double tipAdvanceRatio = 1.0;       ///< insertion advance / tip advance over the window (1 = 1:1)
     double tipArcLength = 0.0;          ///< where the tip is along the colon, m
-    bool closed = false;                ///< a segment's shaft turns a loop beyond its colon's path
     LoopKind reading = LoopKind::None;  ///< this analysis's own type, before the type's hysteresis
 };
 
 class LoopDetector {
 public:
-    /// Coronal turning beyond the colon's path (rad) that closes a loop:
-    /// three quarters of a turn (a loop of the shaft turns a whole one; the
-    /// 2 cm nodes of a loop 7-10 cm across read 5.9-6.5 rad).
-    static constexpr double kClosedTurning = 1.5 * std::numbers::pi;
-
     /// `excessThreshold` (m): the stored shaft that makes a loop (default 8 cm).
     /// `typeDwell`: analyses in a row a new type must be read before a
     /// formed loop takes it (default 20: 0.2 s at the loop's 100 Hz analyses,
     /// shorter than any real change of loop, longer than a flicker).
-    /// `steeredLength` (m): the distal shaft the dials bend, left out of the
-    /// shape reading (0: the whole shaft is read).
     explicit LoopDetector(const geometry::Centreline& colon, double excessThreshold = 0.08,
-                          int typeDwell = 20, double steeredLength = 0.0);
+                          int typeDwell = 20);
 
     /// Analyses the shaft (inserted nodes, anus to tip) at insertion length
     /// `insertion` (m). Call at the recorder rate.
@@ -104,20 +84,9 @@ private:
     /// The centreline between two arc lengths, every centimetre.
     [[nodiscard]] Eigen::Matrix3Xd colonPath(double from, double to) const;
 
-    /// One segment's shape: the crossings and the turning of its shaft
-    /// (nodes first..last, widened by two either side within the passive
-    /// shaft up to node `end`) beyond its colon's path.
-    struct SegmentShape {
-        int crossings = 0;
-        double turning = 0.0;
-    };
-    [[nodiscard]] SegmentShape segmentShape(const Eigen::Matrix3Xd& shaft, const std::vector<double>& s,
-                                            Eigen::Index first, Eigen::Index last, Eigen::Index end) const;
-
     const geometry::Centreline& m_colon;
     double m_threshold;
     int m_typeDwell;
-    double m_steeredLength;
     LoopKind m_current = LoopKind::None;
     LoopKind m_pending = LoopKind::None;  ///< a type read instead of the current one
     int m_pendingReads = 0;               ///< analyses in a row it has been read

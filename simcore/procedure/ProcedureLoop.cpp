@@ -53,7 +53,7 @@ ProcedureLoop::ProcedureLoop(const geometry::ColonAnatomy& anatomy, const Proced
       m_scope(settings.scope), m_contact(anatomy, settings.contact),
       m_coupling(settings.contact.contactStiffness, settings.contactStepLimit, settings.stepping.loopStep,
                  settings.contact.loadRelaxation),
-      m_loops(anatomy.centreline, 0.08, 20, settings.scope.bendingSectionLength),
+      m_loops(anatomy.centreline),
       m_discomfort(withFailureStrain(settings.discomfort, settings.tissue.mesenteryMaxStrain)),
       m_lesions(anatomy, settings.lesions, settings.viewing), m_bleeding(settings.bleeding),
       m_recorder(withColonLength(settings.recorder, anatomy.centreline.length()))

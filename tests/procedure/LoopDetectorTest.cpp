@@ -142,32 +142,6 @@ INSTANTIATE_TEST_SUITE_P(
                            LoopKind::GammaDeepTransverse}),
     [](const auto& info) { return std::string(info.param.label); });
 
-// A curl in the sigmoid whose colon was carried round with it: each node is
-// located at its own length along the shaft (the colon stretched with the
-// shaft, so no excess shaft is stored), and the shape alone closes the loop.
-// The shaft ends just past the curl. The same curl within the steered length
-// at the tip is the dials' bend, not a loop.
-TEST(LoopDetector, AClosedLoopIsReadWhereTheColonWasCarriedWithTheShaft)
-{
-    const double loopAt = segmentMiddle(Segment::Sigmoid) - 0.1;
-    const Eigen::Matrix3Xd s = shaft(loopAt + 0.05, loopAt, Extra::CurlCounterClockwise);
-    std::vector<double> arcs{0.0};
-    for (Eigen::Index i = 1; i < s.cols(); ++i) {
-        arcs.push_back(arcs.back() + (s.col(i) - s.col(i - 1)).norm());
-    }
-    LoopDetector detector(anatomy().centreline);
-    EXPECT_EQ(loopName(detector.update(s, shaftLength(s), arcs)), loopName(LoopKind::Alpha))
-        << "turning " << detector.signals().turning << " in "
-        << geometry::segmentName(detector.signals().segment);
-    EXPECT_LT(detector.signals().excessShaft, 0.01);
-    EXPECT_TRUE(detector.signals().closed);
-    EXPECT_EQ(detector.signals().segment, Segment::Sigmoid);
-
-    LoopDetector steered(anatomy().centreline, 0.08, 20, 0.6);  // the last 60 cm steered
-    EXPECT_EQ(loopName(steered.update(s, shaftLength(s), arcs)), loopName(LoopKind::None))
-        << "turning " << steered.signals().turning;
-}
-
 TEST(LoopDetector, TipThatStopsMovingWithTheShaftIsSeen)
 {
     // The shaft is pushed 6 cm further while the tip stays put: a ratio far above 1.

@@ -21,31 +21,6 @@ inline const geometry::ColonAnatomy& defaultColon()
     return anatomy;
 }
 
-/// A redundant sigmoid (66 cm, as in incomplete examinations; its mesocolon
-/// 8.9 cm, one SD above the mean): the colon the mechanical loop cases use.
-inline const geometry::ColonAnatomy& redundantSigmoidColon()
-{
-    static const geometry::ColonAnatomy anatomy = [] {
-        geometry::AnatomyParameters redundant;
-        redundant.sigmoidLength = 0.66;
-        redundant.sigmoidMesenteryHeight = 0.089;
-        return geometry::buildProceduralColon(redundant);
-    }();
-    return anatomy;
-}
-
-/// Step `step` (from 0) of a push that curls the shaft: from the `held`
-/// input, the tip hooked with the up/down dial at its stop and the shaft
-/// pushed on at 5 cm/s while it is turned counter-clockwise at 1 rad/s.
-inline procedure::InputSample hookedCurl(const procedure::InputSample& held, int step, double dt)
-{
-    procedure::InputSample input = held;
-    input.dialUpDown = 3.0;  // beyond the clinical stop: clamped there
-    input.insertion = held.insertion + 0.05 * step * dt;
-    input.rotation = held.rotation + 1.0 * step * dt;
-    return input;
-}
-
 struct RunSummary {
     double peakHandleForce = 0.0;  ///< N
     bool finite = true;            ///< every output, scope node and wall node stayed finite
