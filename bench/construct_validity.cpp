@@ -12,9 +12,7 @@
 // Seed 0 is the default colon; any other seed is a generated patient.
 
 #include "bench/ListArgument.h"
-#include "case_generator/CaseGenerator.h"
-#include "case_generator/SceneSettings.h"
-#include "case_generator/SceneSpec.h"
+#include "bench/PatientFromSeed.h"
 #include "scoring/SessionMetrics.h"
 #include "simcore/geometry/ProceduralColon.h"
 #include "simcore/procedure/Operator.h"
@@ -45,14 +43,9 @@ struct Run {
 
 Run runOperator(std::uint64_t seed, const procedure::OperatorStyle& style, double seconds)
 {
-    procedure::ProcedureSettings settings;
-    geometry::AnatomyParameters anatomyParameters;
-    if (seed != 0) {
-        const cases::SceneSpec scene = cases::toScene(cases::CaseGenerator().generate(seed));
-        anatomyParameters = scene.anatomy;
-        settings = cases::procedureSettings(scene);
-    }
-    const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(anatomyParameters);
+    const bench::Patient patient = bench::patientFromSeed(seed);
+    const procedure::ProcedureSettings& settings = patient.settings;
+    const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(patient.anatomy);
     procedure::ProcedureLoop loop(anatomy, settings);
     procedure::ScriptedOperator driver(style);
     Run run;

@@ -8,9 +8,7 @@
 // Seed 0 is the default colon; any other seed is a generated patient.
 
 #include "bench/ListArgument.h"
-#include "case_generator/CaseGenerator.h"
-#include "case_generator/SceneSettings.h"
-#include "case_generator/SceneSpec.h"
+#include "bench/PatientFromSeed.h"
 #include "simcore/geometry/ProceduralColon.h"
 #include "simcore/procedure/Operator.h"
 #include "simcore/procedure/ProcedureLoop.h"
@@ -39,15 +37,10 @@ struct Outcome {
 
 Outcome runExpert(std::uint64_t seed, double relaxation, double seconds)
 {
-    procedure::ProcedureSettings settings;
-    geometry::AnatomyParameters anatomyParameters;
-    if (seed != 0) {
-        const cases::SceneSpec scene = cases::toScene(cases::CaseGenerator().generate(seed));
-        anatomyParameters = scene.anatomy;
-        settings = cases::procedureSettings(scene);
-    }
+    const bench::Patient patient = bench::patientFromSeed(seed);
+    procedure::ProcedureSettings settings = patient.settings;
     settings.contact.loadRelaxation = relaxation;
-    const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(anatomyParameters);
+    const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(patient.anatomy);
     procedure::ProcedureLoop loop(anatomy, settings);
     procedure::ScriptedOperator expert(procedure::expertStyle());
     Outcome outcome;
