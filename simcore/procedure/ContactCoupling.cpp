@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace colonosim::procedure {
 
@@ -43,6 +44,7 @@ const double kCarryCosine = std::sqrt(0.5);  ///< a load follows a normal that t
 void ContactCoupling::align(int numNodes, int addedAtBase)
 {
     shiftToTip(m_load, numNodes, addedAtBase, Eigen::Vector3d::Zero().eval());
+    shiftToTip(m_stepDepth, numNodes, addedAtBase, std::numeric_limits<double>::quiet_NaN());
 }
 
 void ContactCoupling::buildCompliance(const scope::DiscreteRod& rod)
@@ -155,7 +157,9 @@ void ContactCoupling::solve(const std::vector<contact::LumenNodeContact>& contac
             // tip's axis swings the tip sideways.
             const double reach = (m_block[a * m + a] * n).norm() + m_wall[a * m + a];
             const double limit = m_maxStep / std::max(reach, 1e-12);
-            lambda = std::clamp(lambda, std::max(0.0, m_startLambda[a] - limit), m_startLambda[a] + limit);
+            const double raise =
+                (m_maxStep + m_growth[static_cast<size_t>(m_active[a])]) / std::max(reach, 1e-12);
+            lambda = std::clamp(lambda, std::max(0.0, m_startLambda[a] - limit), m_startLambda[a] + raise);
             largest = std::max(largest, std::abs(lambda - m_lambda[a]));
             m_lambda[a] = lambda;
             m_normal[a] = n;
@@ -169,10 +173,24 @@ void ContactCoupling::solve(const std::vector<contact::LumenNodeContact>& contac
 
 void ContactCoupling::update(const std::vector<contact::LumenNodeContact>& contacts,
                              const scope::DiscreteRod& rod, int addedAtBase,
-                             const Eigen::VectorXd& wallCompliance)
+                             const Eigen::VectorXd& wallCompliance, bool newStep)
 {
     const int n = std::min(rod.numNodes(), static_cast<int>(contacts.size()));
     align(rod.numNodes(), addedAtBase);
+    if (newStep) {
+        // How far each node came into its wall over the last step: its depth
+        // now against its depth at the last step's start (none for a node
+        // just inserted).
+        m_growth.assign(static_cast<size_t>(rod.numNodes()), 0.0);
+        for (int node = 0; node < n; ++node) {
+            const auto i = static_cast<size_t>(node);
+            const double before = m_stepDepth[i];
+            m_growth[i] = std::isnan(before) ? 0.0 : std::max(0.0, contacts[i].depth - before);
+            m_stepDepth[i] = contacts[i].depth;
+        }
+    } else {
+        m_growth.resize(static_cast<size_t>(rod.numNodes()), 0.0);
+    }
     // The update covers the nodes near or in the wall and those still
     // carrying a load (which the signed depth may release).
     m_active.clear();

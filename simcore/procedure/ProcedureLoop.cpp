@@ -158,7 +158,7 @@ void ProcedureLoop::solveContact(const Eigen::Matrix3Xd& scope, int addedAtBase,
     m_scope.clearLoads();
     m_scope.addGravity(m_settings.environment.gravity *
                        physics::downDirection(m_settings.environment.patientPosition));
-    m_coupling.update(contacts, m_scope.rod(), addedAtBase, m_wallCompliance);
+    m_coupling.update(contacts, m_scope.rod(), addedAtBase, m_wallCompliance, wallMoved);
     m_coupling.solveAndApply(m_scope.rod(), m_contact);
     m_scope.step();
 }

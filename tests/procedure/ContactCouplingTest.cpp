@@ -208,6 +208,48 @@ TEST(ContactCoupling, TheTrustRegionBoundsTheMotionOfOneStep)
     EXPECT_GT(g * lambda, 0.99 * maxStep);
 }
 
+// A node that came into its wall over the last step (the shaft behind it
+// springing forward, not the insertion) may be pushed back by the distance
+// its depth grew as well as by the trust region: otherwise a tip driven on by
+// the chain at metres per second outruns a load that grows by maxStep / reach
+// a step and passes through the wall. Re-measures within one step keep the
+// step's allowance; letting go stays bounded by the trust region alone.
+TEST(ContactCoupling, ANodeComingIntoItsWallIsPushedBackByTheWayItCameIn)
+{
+    Colonoscope scope = straightScope(0.3);
+    const int tip = scope.numInsertedNodes() - 1;
+    const double maxStep = 1e-4;  // m
+    const double came = 2e-3;     // m the tip's depth grows by over one step
+    ContactCoupling coupling(kStiffness, maxStep, kLoopStep, 1.0);
+    coupling.update(contactsOn(scope, {{tip, 0.02}}), scope.rod(), 0, kRigidWall);
+    coupling.solveAndApply(scope.rod(), law());
+    const double g = coupling.delassus()(0, 0);
+    const double first = coupling.loads().col(tip).y();
+    EXPECT_LE(g * first, maxStep * (1.0 + 1e-9));  // no history: the trust region alone
+
+    // The next step starts with the tip 2 mm deeper (the chain's own motion).
+    const auto deeper = contactsOn(scope, {{tip, 0.02 + came}});
+    coupling.update(deeper, scope.rod(), 0, kRigidWall);
+    coupling.solveAndApply(scope.rod(), law());
+    const double raised = coupling.loads().col(tip).y() - first;
+    EXPECT_LE(g * raised, (maxStep + came) * (1.0 + 1e-9));
+    EXPECT_GT(g * raised, 0.99 * (maxStep + came));
+    // A re-measure within the same step keeps the step's allowance.
+    const double before = coupling.loads().col(tip).y();
+    coupling.update(deeper, scope.rod(), 0, kRigidWall, false);
+    coupling.solveAndApply(scope.rod(), law());
+    EXPECT_GT(g * (coupling.loads().col(tip).y() - before), 0.99 * (maxStep + came));
+
+    // The wall falls away: the load lets go by at most maxStep / reach
+    // (maxStep over the whole motion |C n| >= G: a little less than maxStep / G).
+    const double held = coupling.loads().col(tip).y();
+    coupling.update(contactsOn(scope, {{tip, -0.01}}), scope.rod(), 0, kRigidWall);
+    coupling.solveAndApply(scope.rod(), law());
+    const double released = held - coupling.loads().col(tip).y();
+    EXPECT_LE(released, maxStep / g * (1.0 + 1e-9));
+    EXPECT_GT(released, 0.99 * maxStep / g);
+}
+
 // A node that carried a load and is now clear of its wall lets go at once;
 // no load pulls.
 TEST(ContactCoupling, ReleaseIsImmediateAndContactNeverPulls)
