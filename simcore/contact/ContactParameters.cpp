@@ -6,13 +6,14 @@ namespace colonosim::contact {
 
 namespace {
 using P = ContactParameters;
-constexpr std::array<Field<P>, 6> kContactFields{{
+constexpr std::array<Field<P>, 7> kContactFields{{
     {&P::stiffnessSpec, &P::contactStiffness},
     {&P::dampingSpec, &P::contactDamping},
     {&P::frictionSpec, &P::frictionCoefficient},
     {&P::stickVelocitySpec, &P::stickVelocity},
     {&P::passesSpec, &P::couplingPasses},
     {&P::relaxationSpec, &P::loadRelaxation},
+    {&P::stepLimitSpec, &P::stepLimit},
 }};
 }  // namespace
 

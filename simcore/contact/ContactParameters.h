@@ -76,12 +76,23 @@ struct ContactParameters {
         "4,540 with 0.5 and 1,535 with 0.3; steps with the tip more than a scope diameter into the wall "
         "2,447, "
         "150 and 11; deepest 81, 45 and 15.6 mm"};
+    static constexpr ParameterSpec stepLimitSpec{
+        "stepLimit",
+        "m",
+        0.5e-3,
+        1.0e-5,
+        1.0e-2,
+        "trust region of the contact solve: how far the change of a node's contact load may move it in one "
+        "loop step, beyond the way its depth grew over the last step (procedure/ContactCoupling.h)",
+        "model choice: 0.5 mm per 1 ms step, the 0.5 m/s insertion the contact must hold without tunnelling "
+        "(issue 3); a contact that appears deep is resolved over several steps, not thrown across the lumen"};
     double contactStiffness = stiffnessSpec.defaultValue;
     double contactDamping = dampingSpec.defaultValue;
     double frictionCoefficient = frictionSpec.defaultValue;
     double stickVelocity = stickVelocitySpec.defaultValue;
     double couplingPasses = passesSpec.defaultValue;
     double loadRelaxation = relaxationSpec.defaultValue;
+    double stepLimit = stepLimitSpec.defaultValue;
 
     [[nodiscard]] static std::span<const Field<ContactParameters>> fields();
     void validate() const;

@@ -51,7 +51,7 @@ ProcedureLoop::ProcedureLoop(const geometry::ColonAnatomy& anatomy, const Proced
       m_colon(physics::buildColonBody(anatomy, settings.tissue, settings.environment, settings.calibration,
                                       colonOptions(anatomy, settings))),
       m_scope(settings.scope), m_contact(anatomy, settings.contact),
-      m_coupling(settings.contact.contactStiffness, settings.contactStepLimit, settings.stepping.loopStep,
+      m_coupling(settings.contact.contactStiffness, settings.contact.stepLimit, settings.stepping.loopStep,
                  settings.contact.loadRelaxation),
       m_loops(anatomy.centreline),
       m_discomfort(withFailureStrain(settings.discomfort, settings.tissue.mesenteryMaxStrain)),

@@ -67,10 +67,6 @@ struct ProcedureSettings {
     render::RenderParameters viewing;
     double insufflationRate = 266.6;  ///< Pa/s while air (or, negative, suction) is pressed (2 mmHg/s)
     double maxInsufflation = 8000.0;  ///< Pa the insufflator never exceeds (60 mmHg)
-    /// m: the contact response moves a scope node at most this far per loop
-    /// step (0.5 mm per 1 ms = 0.5 m/s, the fastest insertion the contact
-    /// must handle; model choice, see ContactCoupling.h)
-    double contactStepLimit = 0.5e-3;
 };
 
 /// What a haptic device and the camera need after each step.
