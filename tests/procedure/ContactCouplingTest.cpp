@@ -221,7 +221,9 @@ TEST(ContactCoupling, ANodeComingIntoItsWallIsPushedBackByTheWayItCameIn)
     const double maxStep = 1e-4;  // m
     const double came = 2e-3;     // m the tip's depth grows by over one step
     ContactCoupling coupling(kStiffness, maxStep, kLoopStep, 1.0);
-    coupling.update(contactsOn(scope, {{tip, 0.02}}), scope.rod(), 0, kRigidWall);
+    // (The coupling reads its contacts again in solveAndApply(): each set outlives its solve.)
+    const auto pressed = contactsOn(scope, {{tip, 0.02}});
+    coupling.update(pressed, scope.rod(), 0, kRigidWall);
     coupling.solveAndApply(scope.rod(), law());
     const double g = coupling.delassus()(0, 0);
     const double first = coupling.loads().col(tip).y();
@@ -243,7 +245,8 @@ TEST(ContactCoupling, ANodeComingIntoItsWallIsPushedBackByTheWayItCameIn)
     // The wall falls away: the load lets go by at most maxStep / reach
     // (maxStep over the whole motion |C n| >= G: a little less than maxStep / G).
     const double held = coupling.loads().col(tip).y();
-    coupling.update(contactsOn(scope, {{tip, -0.01}}), scope.rod(), 0, kRigidWall);
+    const auto away = contactsOn(scope, {{tip, -0.01}});
+    coupling.update(away, scope.rod(), 0, kRigidWall);
     coupling.solveAndApply(scope.rod(), law());
     const double released = held - coupling.loads().col(tip).y();
     EXPECT_LE(released, maxStep / g * (1.0 + 1e-9));
