@@ -54,40 +54,63 @@ struct SplitFrame {
 }
 
 // rebuild() in three passes over the joints. The first holds the sin/cos
-// calls of the larger angles: within the others, each call would spill the
-// registers of their arithmetic, and of the frame chain.
+// calls of the rare joint beyond the series' range: within the others, each
+// call would spill the registers of their arithmetic, and of the frame chain.
 
 /// Rodrigues' (a, b) of every joint.
 void updateRodrigues(DiscreteRod& rod)
 {
     const size_t n = rod.theta.size();
+    const Eigen::Vector3d* theta = rod.theta.data();
+    Eigen::Array2d* rodrigues = rod.rodrigues.data();
     for (size_t i = 0; i < n; ++i) {
-        rod.rodrigues[i] = rodriguesCoefficients(rod.theta[i].squaredNorm());
+        rodrigues[i] = rodriguesCoefficients(theta[i].squaredNorm());
     }
 }
 
-/// R(Theta_k) of every joint, from its (a, b).
+/// D_k R(Theta_k) of every joint, from its (a, b): the dial's rest rotation
+/// and the joint's own, outside the frame chain that would wait on both.
 void updateRotations(DiscreteRod& rod)
 {
     const size_t n = rod.theta.size();
+    const Eigen::Vector3d* theta = rod.theta.data();
+    const Eigen::Array2d* rodrigues = rod.rodrigues.data();
+    const unsigned char* hasDial = rod.hasDial.data();
+    const Eigen::Matrix3d* dial = rod.dial.data();
+    Eigen::Matrix3d* rotation = rod.rotation.data();
     for (size_t i = 0; i < n; ++i) {
-        rod.rotation[i] = rotationFromCoefficients(rod.theta[i], rod.rodrigues[i]);
+        const Eigen::Matrix3d r = rotationFromCoefficients(theta[i], rodrigues[i]);
+        if (hasDial[i]) {
+            rotation[i].noalias() = dial[i] * r;
+        } else {
+            rotation[i] = r;
+        }
     }
 }
 
-/// Eqs 6-7 from the rotations, from the base to the tip.
+/// Eqs 6-7 from the rotations, from the base to the tip. The arrays are
+/// taken as raw pointers (Eigen's stores may alias a std::vector's own data
+/// pointer, which would be reloaded after each), and x_{k+1} is advanced
+/// from the frame held in registers, not read back from its store.
 void chainFrames(DiscreteRod& rod)
 {
     const size_t n = rod.theta.size();
-    Eigen::Vector3d x = rod.basePosition + rod.stubLength * rod.baseFrame.col(2);
+    const double length = rod.elementLength;
+    const Eigen::Matrix3d* rotation = rod.rotation.data();
+    Eigen::Matrix3d* frame = rod.frame.data();
+    Eigen::Vector3d* position = rod.position.data();
+    const Eigen::Vector3d start = rod.basePosition + rod.stubLength * rod.baseFrame.col(2);
+    Eigen::Vector2d xTop = start.head<2>();
+    double xBottom = start.z();
     SplitFrame before = SplitFrame::of(rod.baseFrame);
     for (size_t i = 0; i < n; ++i) {
-        rod.position[i] = x;
-        // C_k = (C_{k-1} D_k) R_k, in that order: the dial is applied first.
-        const SplitFrame dialled = rod.hasDial[i] ? times(before, rod.dial[i]) : before;
-        const SplitFrame current = times(dialled, rod.rotation[i]);
-        current.store(rod.frame[i]);
-        x += rod.elementLength * rod.frame[i].col(2);
+        position[i].head<2>() = xTop;
+        position[i].z() = xBottom;
+        // C_k = C_{k-1} (D_k R_k): the dial is applied first.
+        const SplitFrame current = times(before, rotation[i]);
+        current.store(frame[i]);
+        xTop += length * current.top[2];  // eq 7: x_{k+1} = x_k + l C_k e_3
+        xBottom += length * current.bottom[2];
         before = current;
     }
 }
@@ -98,7 +121,8 @@ void DiscreteRod::reset(int numNodes, double length, double flexuralRigidity, do
                         int capacity)
 {
     const auto cap = static_cast<size_t>(std::max(capacity, numNodes));
-    for (auto* v : {&theta, &force, &torque, &position, &damping, &thetaStart}) {
+    for (auto* v :
+         {&theta, &force, &torque, &position, &damping, &thetaStart, &relaxationGain, &dampingPull}) {
         v->reserve(cap);
         v->assign(static_cast<size_t>(numNodes), Eigen::Vector3d::Zero());
     }
@@ -162,6 +186,8 @@ void DiscreteRod::resizeAtBase(int numNodes)
     torque.assign(n, Eigen::Vector3d::Zero());
     damping.assign(n, Eigen::Vector3d::Zero());
     thetaStart = theta;
+    relaxationGain.resize(n);
+    dampingPull.resize(n);
     position.resize(n);
     frame.resize(n);
     rodrigues.resize(n);

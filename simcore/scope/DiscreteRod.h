@@ -56,11 +56,15 @@ struct DiscreteRod {
     std::vector<Eigen::Matrix3d> frame;     ///< C_k; C_{n-1} is the tip frame (derived)
     /// Rodrigues' coefficients (a, b) of R(Theta_k) (derived; see Rotation.h).
     std::vector<Eigen::Array2d> rodrigues;
-    std::vector<Eigen::Matrix3d> rotation;  ///< R(Theta_k) (derived)
+    std::vector<Eigen::Matrix3d> rotation;  ///< D_k R(Theta_k) (derived)
     /// D_k, the step's damping of joint k, N m/rad (0: quasi-static); the
     /// chain solves K Theta + D (Theta - thetaStart) = C^T M.
     std::vector<Eigen::Vector3d> damping;
     std::vector<Eigen::Vector3d> thetaStart;  ///< Theta at the start of the step, rad
+    /// w / (K_k + D_k) of the chain's relaxation, rad/(N m) (derived, set by solveChain).
+    std::vector<Eigen::Vector3d> relaxationGain;
+    /// D_k Theta_start,k, N m (derived, set by solveChain).
+    std::vector<Eigen::Vector3d> dampingPull;
 
     /// A straight rod of `numNodes` nodes (capacity `capacity` >= numNodes).
     void reset(int numNodes, double length, double flexuralRigidity, double torsionalRigidity, int capacity);
