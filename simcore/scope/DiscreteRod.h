@@ -83,7 +83,7 @@ struct DiscreteRod {
     /// carried over. Loads are cleared.
     void resizeAtBase(int numNodes);
     /// Eqs 6-7: positions and frames from the base to the tip (and the
-    /// rotations R(Theta_k) they are built from).
+    /// rotations D_k R(Theta_k) they are built from).
     void rebuild();
     void clearLoads();
 };

@@ -58,22 +58,12 @@ inline constexpr double kRodriguesSeriesLimit2 = 0.36;  ///< t^2 below which the
     return (k % 2 == 0 ? 1.0 : -1.0) * inverseFactorial(2 * k + 2);
 }
 
-}  // namespace detail
-
-/// Whether the series of rodriguesSeries() holds at t2 = |theta|^2, rad^2.
-[[nodiscard]] inline bool rodriguesSeriesHolds(double t2)
-{
-    return t2 < detail::kRodriguesSeriesLimit2;
-}
-
-/// Rodrigues' coefficients (a, b) by their series (exact to rounding where
-/// rodriguesSeriesHolds(t2)), both in one Array2d (two-lane arithmetic), by
-/// Estrin's scheme: pairs of terms, then pairs of pairs, so that the
-/// multiplications wait on three levels rather than on Horner's eight.
+/// (a, b) by the series above (exact to rounding below kRodriguesSeriesLimit2),
+/// both in one Array2d (two-lane arithmetic), by Estrin's scheme: pairs of
+/// terms, then pairs of pairs, so that the multiplications wait on three
+/// levels rather than on Horner's eight.
 [[nodiscard]] inline Eigen::Array2d rodriguesSeries(double t2)
 {
-    using detail::rodriguesSeriesA;
-    using detail::rodriguesSeriesB;
     const auto c = [](int k) { return Eigen::Array2d(rodriguesSeriesA(k), rodriguesSeriesB(k)); };
     const double t4 = t2 * t2;
     const double t8 = t4 * t4;
@@ -86,13 +76,15 @@ inline constexpr double kRodriguesSeriesLimit2 = 0.36;  ///< t^2 below which the
     return p03 + p47 * t8;
 }
 
+}  // namespace detail
+
 /// Rodrigues' coefficients (a, b) of R(theta) for t2 = |theta|^2: the
 /// series below t = 0.6 rad; above, sin and cos, with the two divisions
 /// paired in one two-lane division.
 [[nodiscard]] inline Eigen::Array2d rodriguesCoefficients(double t2)
 {
-    if (rodriguesSeriesHolds(t2)) {
-        return rodriguesSeries(t2);
+    if (t2 < detail::kRodriguesSeriesLimit2) {
+        return detail::rodriguesSeries(t2);
     }
     const double t = std::sqrt(t2);
     return Eigen::Array2d(std::sin(t), 1.0 - std::cos(t)) / Eigen::Array2d(t, t2);
