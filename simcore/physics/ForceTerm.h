@@ -80,9 +80,14 @@ public:
     /// Appends the pairs of distinct nodes whose stiffness block K_ij this
     /// term can make non-zero (the static solver's preconditioner assembles
     /// K over them; see TangentPreconditioner.h). None by default: a term
-    /// acting on each node alone, or one whose couplings come and go with
-    /// the state (contact), which then only slows that solver down.
+    /// acting on each node alone.
     virtual void addCouplings(std::vector<std::pair<int, int>>& pairs) const { (void)pairs; }
+    /// False for a term whose couplings come and go with the state and are
+    /// not listed by addCouplings (contact): probing it would mix the columns
+    /// of the nodes that share a colour, so the preconditioner leaves it out
+    /// (TissueBody::declaredStiffnessProduct) and the conjugate gradients,
+    /// which multiply by every term, take a few more iterations for it.
+    [[nodiscard]] virtual bool couplingsDeclared() const { return true; }
     /// Potential energy of the elastic part, J (0 for non-conservative terms).
     [[nodiscard]] virtual double potentialEnergy(const Positions& x) const = 0;
     /// True when K and D are symmetric, so the implicit solver may include

@@ -69,6 +69,9 @@ public:
     void addDampingProduct(const Positions&, const Eigen::Matrix3Xd&, Eigen::Matrix3Xd&) const override {}
     void addStiffnessBound(const Positions& x, Eigen::VectorXd& kRow, Eigen::VectorXd& cRow) const override;
     [[nodiscard]] double potentialEnergy(const Positions& x) const override;
+    /// Its pairs come and go with the state: not probed by the static
+    /// solver's preconditioner.
+    [[nodiscard]] bool couplingsDeclared() const override { return false; }
 
     [[nodiscard]] int numRings() const { return static_cast<int>(m_rings.size()); }
     /// Ring pairs that overlap at x beyond their rest overlap, and the

@@ -113,7 +113,7 @@ void TangentPreconditioner::probe(const TissueBody& body)
             for (const int a : members) {
                 dx(axis, m_nodes[static_cast<size_t>(a)]) = 1.0;
             }
-            body.stiffnessProduct(body.positions(), dx, df, true);
+            body.declaredStiffnessProduct(body.positions(), dx, df);
             for (const int a : members) {
                 dx(axis, m_nodes[static_cast<size_t>(a)]) = 0.0;
             }

@@ -129,6 +129,17 @@ void TissueBody::stiffnessProduct(const Positions& x, const Eigen::Matrix3Xd& dx
     }
 }
 
+void TissueBody::declaredStiffnessProduct(const Positions& x, const Eigen::Matrix3Xd& dx,
+                                          Eigen::Matrix3Xd& df) const
+{
+    df.setZero(3, dx.cols());
+    for (const auto& term : m_terms) {
+        if (term->hasSymmetricJacobian() && term->couplingsDeclared()) {
+            term->addDefiniteStiffnessProduct(x, dx, df);
+        }
+    }
+}
+
 void TissueBody::dampingProduct(const Positions& x, const Eigen::Matrix3Xd& dv, Eigen::Matrix3Xd& df) const
 {
     df.setZero(3, dv.cols());

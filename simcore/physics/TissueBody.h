@@ -60,6 +60,10 @@ public:
     /// symmetric Jacobian; zero rows on fixed nodes.
     void stiffnessProduct(const Positions& x, const Eigen::Matrix3Xd& dx, Eigen::Matrix3Xd& df,
                           bool definite = false) const;
+    /// df = K+ dx summed over the terms whose couplings are declared
+    /// (ForceTerm::couplingsDeclared): what the static solver's
+    /// preconditioner probes.
+    void declaredStiffnessProduct(const Positions& x, const Eigen::Matrix3Xd& dx, Eigen::Matrix3Xd& df) const;
     void dampingProduct(const Positions& x, const Eigen::Matrix3Xd& dv, Eigen::Matrix3Xd& df) const;
     /// Applies every constraint to the integrated nodes.
     int projectConstraints(Positions& x, Velocities& v) const;

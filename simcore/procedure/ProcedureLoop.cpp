@@ -68,7 +68,7 @@ ProcedureLoop::ProcedureLoop(const geometry::ColonAnatomy& anatomy, const Proced
     }
     // Start at rest in equilibrium under gravity and insufflation (the
     // sleeping of nodes at rest assumes it), with no contact yet.
-    physics::solveStaticEquilibrium(m_colon.body, 1e-5, 1000);
+    m_restSolve = physics::solveStaticEquilibrium(m_colon.body, 1e-5, 1000);
     m_simulation = std::make_unique<physics::TissueSimulation>(m_colon.body, settings.stepping);
     if (settings.activeRegion) {
         m_region = std::make_unique<physics::ActiveRegion>(m_colon.neighbours, physics::SleepParameters{});

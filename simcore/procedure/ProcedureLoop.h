@@ -30,6 +30,7 @@
 #include "simcore/geometry/ColonAnatomy.h"
 #include "simcore/physics/ActiveRegion.h"
 #include "simcore/physics/ColonBody.h"
+#include "simcore/physics/StaticSolver.h"
 #include "simcore/physics/TissueSimulation.h"
 #include "simcore/procedure/BleedingMarks.h"
 #include "simcore/procedure/ContactCoupling.h"
@@ -103,6 +104,8 @@ public:
     [[nodiscard]] const physics::ColonBody& colon() const { return m_colon; }
     [[nodiscard]] const LoopDetector& loops() const { return m_loops; }
     [[nodiscard]] const physics::TissueSimulation& tissue() const { return *m_simulation; }
+    /// The static solve of the colon's rest state the procedure starts from.
+    [[nodiscard]] const physics::StaticResult& restSolve() const { return m_restSolve; }
     /// The deformed lumen and each scope node's contact, as of the last step.
     [[nodiscard]] const contact::LumenContact& lumen() const { return m_contact; }
     [[nodiscard]] const ContactCoupling& coupling() const { return m_coupling; }
@@ -129,6 +132,7 @@ private:
     const geometry::ColonAnatomy& m_anatomy;
     ProcedureSettings m_settings;
     physics::ColonBody m_colon;
+    physics::StaticResult m_restSolve;
     std::unique_ptr<physics::TissueSimulation> m_simulation;
     std::unique_ptr<physics::ActiveRegion> m_region;
     scope::Colonoscope m_scope;

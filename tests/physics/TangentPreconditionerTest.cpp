@@ -5,11 +5,14 @@
 #include "TubeAnatomy.h"
 #include "simcore/geometry/ProceduralColon.h"
 #include "simcore/physics/ColonBody.h"
+#include "simcore/physics/LumenSelfContact.h"
 #include "simcore/physics/StaticSolver.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
+#include <vector>
 
 namespace colonosim::physics {
 namespace {
@@ -67,6 +70,63 @@ TEST(TangentPreconditioner, InvertsTheStiffnessOfTheDefaultColonAtRest)
     const StaticResult rest = solveStaticEquilibrium(colon.body, 1e-5, 1000);
     ASSERT_TRUE(rest.converged);
     expectExactInverse(colon.body, 64);
+}
+
+// A self-contact's couplings come and go with the state and are not
+// declared: probing it would put a ring's contact blocks into the columns of
+// other nodes of the same colour. The preconditioner probes only the declared
+// terms, so it still inverts them exactly while the contact acts (generated
+// patient 7 overlaps itself at rest; RestStateTest.cpp has the whole solve).
+TEST(TangentPreconditioner, LeavesOutTheSelfContactWhoseCouplingsAreNotDeclared)
+{
+    const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(geometry::AnatomyParameters{});
+    ColonBody colon =
+        buildColonBody(anatomy, TissueParameters{}, EnvironmentParameters{}, StiffnessCalibration{});
+    ASSERT_NE(colon.selfContact, nullptr);
+    EXPECT_FALSE(colon.selfContact->couplingsDeclared());
+    // The sigmoid's ring at 0.342 m moved 10 mm into the transverse colon's
+    // at 1.091 m (44.5 mm apart, reach about 37 mm; LumenSelfContactTest.cpp).
+    std::vector<double> arcs;
+    for (const auto& node : anatomy.physicsNodes) {
+        arcs.push_back(node.arcLength);
+    }
+    const std::vector<LumenSelfContact::Ring> rings = lumenRings(anatomy.physicsMesh.vertices, arcs);
+    const auto nearest = [&](double arc) {
+        size_t best = 0;
+        for (size_t i = 0; i < rings.size(); ++i) {
+            if (std::abs(rings[i].arcLength - arc) < std::abs(rings[best].arcLength - arc)) {
+                best = i;
+            }
+        }
+        return rings[best];
+    };
+    const LumenSelfContact::Ring a = nearest(0.342);
+    const LumenSelfContact::Ring b = nearest(1.091);
+    const auto centre = [&](const LumenSelfContact::Ring& ring) {
+        Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+        for (const int node : ring.nodes) {
+            sum += colon.body.positions().col(node);
+        }
+        return Eigen::Vector3d(sum / static_cast<double>(ring.nodes.size()));
+    };
+    const Eigen::Vector3d shift = (centre(b) - centre(a)).normalized() * 15e-3;
+    for (const int node : a.nodes) {
+        colon.body.positions().col(node) += shift;
+    }
+    ASSERT_GT(colon.selfContact->overlappingPairs(colon.body.positions()), 0);
+
+    TangentPreconditioner preconditioner;
+    ASSERT_TRUE(preconditioner.build(colon.body));
+    const Eigen::Matrix3Xd v = randomOnIntegrated(colon.body, 4);
+    Eigen::Matrix3Xd declared;
+    colon.body.declaredStiffnessProduct(colon.body.positions(), v, declared);
+    Eigen::Matrix3Xd z;
+    preconditioner.apply(-declared, z);
+    EXPECT_LT((z - v).norm(), 1e-8 * v.norm());
+    // The contact acts in the full product (which the conjugate gradients use).
+    Eigen::Matrix3Xd full;
+    colon.body.stiffnessProduct(colon.body.positions(), v, full, true);
+    EXPECT_GT((full - declared).norm(), 1e-6 * declared.norm());
 }
 
 }  // namespace
