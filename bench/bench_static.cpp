@@ -4,7 +4,13 @@
 // preconditioned by the assembled and factored -K+ (the default) and by its
 // diagonal bound (Jacobi, the solver before). Arg 0: assembled, 1: diagonal.
 // Compare the two rows of one run; counters: Newton iterations and residual.
+//
+// BM_ProcedureStart/seed: a whole ProcedureLoop construction (the colon
+// built, its rest state solved, the contact and the scope set up) for the
+// default colon (seed 0) and generated patients, among them seed 7, whose
+// colon overlaps itself at rest; counters from its rest solve.
 
+#include "bench/PatientFromSeed.h"
 #include "simcore/geometry/ProceduralColon.h"
 #include "simcore/physics/ColonBody.h"
 #include "simcore/physics/StaticSolver.h"
@@ -36,5 +42,23 @@ void BM_StaticEquilibrium(benchmark::State& state)
     state.counters["converged"] = result.converged ? 1.0 : 0.0;
 }
 BENCHMARK(BM_StaticEquilibrium)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->Iterations(3);
+
+void BM_ProcedureStart(benchmark::State& state)
+{
+    const bench::Patient patient = bench::patientFromSeed(static_cast<std::uint64_t>(state.range(0)));
+    const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(patient.anatomy);
+    physics::StaticResult rest;
+    for (auto _ : state) {
+        const procedure::ProcedureLoop loop(anatomy, patient.settings);
+        rest = loop.restSolve();
+        benchmark::DoNotOptimize(rest);
+    }
+    state.counters["newton_iterations"] = rest.iterations;
+    state.counters["factored_iterations"] = rest.factoredIterations;
+    state.counters["cg_iterations"] = rest.conjugateGradientIterations;
+    state.counters["residual_N"] = rest.residual;
+    state.counters["stalled"] = rest.stalled ? 1.0 : 0.0;
+}
+BENCHMARK(BM_ProcedureStart)->Arg(0)->Arg(3)->Arg(7)->Arg(15)->Unit(benchmark::kMillisecond)->Iterations(2);
 
 }  // namespace
