@@ -284,4 +284,28 @@ ColonLayout layoutColon(const AnatomyParameters& params, double sampleSpacing)
     return layout;
 }
 
+LumenSelfOverlap lumenSelfOverlap(const Centreline& centreline)
+{
+    LumenSelfOverlap overlap;
+    const std::vector<Eigen::Vector3d>& c = centreline.points;
+    const std::vector<double>& s = centreline.arcLength;
+    const std::vector<double>& r = centreline.radius;
+    for (size_t i = 0; i < c.size(); ++i) {
+        for (size_t j = i + 1; j < c.size(); ++j) {
+            const double reach = r[i] + r[j];
+            if (s[j] - s[i] <= 2.0 * reach) {
+                continue;
+            }
+            const double depth = reach - (c[i] - c[j]).norm();
+            if (depth > 0.0) {
+                ++overlap.pairs;
+                if (depth > overlap.deepest) {
+                    overlap = {overlap.pairs, depth, s[i], s[j]};
+                }
+            }
+        }
+    }
+    return overlap;
+}
+
 }  // namespace colonosim::geometry

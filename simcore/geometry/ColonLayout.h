@@ -67,4 +67,21 @@ struct ColonLayout {
 /// params::ParameterError when `params` is invalid.
 [[nodiscard]] ColonLayout layoutColon(const AnatomyParameters& params, double sampleSpacing = 0.001);
 
+/// Where two parts of the distended lumen far apart along the colon pass
+/// through each other: centreline samples i, j whose arc lengths differ by
+/// more than 2 (r_i + r_j) (nearer samples meet in any bend; the pairing rule
+/// of physics/LumenSelfContact.h) and whose centres are less than r_i + r_j
+/// apart. The layout keeps each bend round (the rule above) but not the
+/// colon's parts apart: a long transverse colon sagging into the pelvis can
+/// run through the sigmoid's loop (11 of generated seeds 1-200; seed 7's 36 mm
+/// deep). `colonosim case generate` and `case validate` name it.
+struct LumenSelfOverlap {
+    int pairs = 0;         ///< sample pairs that overlap
+    double deepest = 0.0;  ///< largest r_i + r_j - |c_i - c_j|, m
+    double arcA = 0.0;     ///< where the deepest pair lies along the colon, m (arcA < arcB)
+    double arcB = 0.0;
+};
+
+[[nodiscard]] LumenSelfOverlap lumenSelfOverlap(const Centreline& centreline);
+
 }  // namespace colonosim::geometry

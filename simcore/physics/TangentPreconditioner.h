@@ -14,7 +14,7 @@
 /// kept from one build to the next). A term whose couplings are not declared
 /// (the lumen's self-contact, ForceTerm::couplingsDeclared) is not probed: it
 /// would mix the columns of a colour and make the matrix indefinite (on
-/// generated seed 7 the factorisation then failed at every iteration after
+/// generated seed 7, a colon through itself, the factorisation then failed at every iteration after
 /// the first, and the Jacobi fallback took about 2,600 conjugate-gradient
 /// iterations a Newton iteration; without the contact, about 10). The
 /// conjugate gradients still multiply by the exact operator, so leaving it
