@@ -14,12 +14,12 @@
 /// kept from one build to the next). A term whose couplings are not declared
 /// (the lumen's self-contact, ForceTerm::couplingsDeclared) is not probed: it
 /// would mix the columns of a colour and make the matrix indefinite (on
-/// generated seed 7, a colon through itself, the factorisation then failed at every iteration after
-/// the first, and the Jacobi fallback took about 2,600 conjugate-gradient
-/// iterations a Newton iteration; without the contact, about 10). The
-/// conjugate gradients still multiply by the exact operator, so leaving it
-/// out only adds an iteration or so per contact pair, it does not change the
-/// solution.
+/// generated seed 7, a colon through itself, the factorisation then failed
+/// at every iteration after the first, and the Jacobi fallback took about
+/// 2,600 conjugate-gradient iterations a Newton iteration; without the
+/// contact, about 10). The conjugate gradients still multiply by the exact
+/// operator, so leaving it out only adds an iteration or so per contact
+/// pair, it does not change the solution.
 ///
 /// On the default colon (1,873 integrated nodes) the Jacobi preconditioner
 /// took 26,904 conjugate-gradient iterations over the 14 Newton iterations of
