@@ -47,9 +47,18 @@ void BM_StaticEquilibrium(benchmark::State& state)
 }
 BENCHMARK(BM_StaticEquilibrium)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->Iterations(3);
 
-/// The rest solve's counters on a procedure-start benchmark.
-void setRestCounters(benchmark::State& state, const physics::StaticResult& rest)
+/// Times ProcedureLoop's construction for one patient, with the counters of
+/// its rest solve.
+void timeStarts(benchmark::State& state, const geometry::AnatomyParameters& parameters,
+                const procedure::ProcedureSettings& settings)
 {
+    const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(parameters);
+    physics::StaticResult rest;
+    for (auto _ : state) {
+        const procedure::ProcedureLoop loop(anatomy, settings);
+        rest = loop.restSolve();
+        benchmark::DoNotOptimize(rest);
+    }
     state.counters["newton_iterations"] = rest.iterations;
     state.counters["factored_iterations"] = rest.factoredIterations;
     state.counters["cg_iterations"] = rest.conjugateGradientIterations;
@@ -60,14 +69,7 @@ void setRestCounters(benchmark::State& state, const physics::StaticResult& rest)
 void BM_ProcedureStart(benchmark::State& state)
 {
     const bench::Patient patient = bench::patientFromSeed(static_cast<std::uint64_t>(state.range(0)));
-    const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(patient.anatomy);
-    physics::StaticResult rest;
-    for (auto _ : state) {
-        const procedure::ProcedureLoop loop(anatomy, patient.settings);
-        rest = loop.restSolve();
-        benchmark::DoNotOptimize(rest);
-    }
-    setRestCounters(state, rest);
+    timeStarts(state, patient.anatomy, patient.settings);
 }
 BENCHMARK(BM_ProcedureStart)->Arg(0)->Arg(3)->Arg(15)->Unit(benchmark::kMillisecond)->Iterations(2);
 
@@ -80,15 +82,7 @@ void BM_ProcedureStartThroughItself(benchmark::State& state)
         return;
     }
     const cases::SceneSpec scene = cases::toScene(*file.value);
-    const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(scene.anatomy);
-    const procedure::ProcedureSettings settings = cases::procedureSettings(scene);
-    physics::StaticResult rest;
-    for (auto _ : state) {
-        const procedure::ProcedureLoop loop(anatomy, settings);
-        rest = loop.restSolve();
-        benchmark::DoNotOptimize(rest);
-    }
-    setRestCounters(state, rest);
+    timeStarts(state, scene.anatomy, cases::procedureSettings(scene));
 }
 BENCHMARK(BM_ProcedureStartThroughItself)->Unit(benchmark::kMillisecond)->Iterations(2);
 

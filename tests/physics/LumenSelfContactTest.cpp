@@ -7,6 +7,7 @@
 #include "simcore/physics/ColonBody.h"
 #include "simcore/physics/StaticSolver.h"
 #include "simcore/physics/TissueSimulation.h"
+#include "tests/physics/ColonRings.h"
 
 #include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
@@ -221,28 +222,11 @@ double pressedTogether(double selfContactStiffness, double& reach)
     tissue.selfContactStiffness = selfContactStiffness;
     ColonBody colon = buildColonBody(anatomy, tissue, EnvironmentParameters{}, StiffnessCalibration{});
     solveStaticEquilibrium(colon.body, 1e-5, 1000);
-    std::vector<double> arcs;
-    for (const auto& node : anatomy.physicsNodes) {
-        arcs.push_back(node.arcLength);
-    }
-    const std::vector<LumenSelfContact::Ring> rings = lumenRings(anatomy.physicsMesh.vertices, arcs);
-    const auto nearest = [&](double arc) {
-        size_t best = 0;
-        for (size_t i = 0; i < rings.size(); ++i) {
-            if (std::abs(rings[i].arcLength - arc) < std::abs(rings[best].arcLength - arc)) {
-                best = i;
-            }
-        }
-        return rings[best];
-    };
-    const LumenSelfContact::Ring a = nearest(0.342), b = nearest(1.091);
+    const LumenSelfContact::Ring a = testing::ringNearest(anatomy, 0.342);
+    const LumenSelfContact::Ring b = testing::ringNearest(anatomy, 1.091);
     reach = a.radius + b.radius;
     const auto centre = [&](const LumenSelfContact::Ring& ring) {
-        Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-        for (const int node : ring.nodes) {
-            sum += colon.body.positions().col(node);
-        }
-        return Eigen::Vector3d(sum / static_cast<double>(ring.nodes.size()));
+        return testing::ringCentre(colon.body.positions(), ring);
     };
     TissueSimulation simulation(colon.body, SteppingPolicy{});
     for (int step = 0; step < 1000; ++step) {

@@ -7,12 +7,11 @@
 #include "simcore/physics/ColonBody.h"
 #include "simcore/physics/LumenSelfContact.h"
 #include "simcore/physics/StaticSolver.h"
+#include "tests/physics/ColonRings.h"
 
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <random>
-#include <vector>
 
 namespace colonosim::physics {
 namespace {
@@ -84,30 +83,12 @@ TEST(TangentPreconditioner, LeavesOutTheSelfContactWhoseCouplingsAreNotDeclared)
         buildColonBody(anatomy, TissueParameters{}, EnvironmentParameters{}, StiffnessCalibration{});
     ASSERT_NE(colon.selfContact, nullptr);
     EXPECT_FALSE(colon.selfContact->couplingsDeclared());
-    // The sigmoid's ring at 0.342 m moved 10 mm into the transverse colon's
-    // at 1.091 m (44.5 mm apart, reach about 37 mm; LumenSelfContactTest.cpp).
-    std::vector<double> arcs;
-    for (const auto& node : anatomy.physicsNodes) {
-        arcs.push_back(node.arcLength);
-    }
-    const std::vector<LumenSelfContact::Ring> rings = lumenRings(anatomy.physicsMesh.vertices, arcs);
-    const auto nearest = [&](double arc) {
-        size_t best = 0;
-        for (size_t i = 0; i < rings.size(); ++i) {
-            if (std::abs(rings[i].arcLength - arc) < std::abs(rings[best].arcLength - arc)) {
-                best = i;
-            }
-        }
-        return rings[best];
-    };
-    const LumenSelfContact::Ring a = nearest(0.342);
-    const LumenSelfContact::Ring b = nearest(1.091);
+    // The sigmoid's ring at 0.342 m moved 15 mm towards the transverse
+    // colon's at 1.091 m (44.5 mm apart, reach about 37 mm; LumenSelfContactTest.cpp).
+    const LumenSelfContact::Ring a = testing::ringNearest(anatomy, 0.342);
+    const LumenSelfContact::Ring b = testing::ringNearest(anatomy, 1.091);
     const auto centre = [&](const LumenSelfContact::Ring& ring) {
-        Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-        for (const int node : ring.nodes) {
-            sum += colon.body.positions().col(node);
-        }
-        return Eigen::Vector3d(sum / static_cast<double>(ring.nodes.size()));
+        return testing::ringCentre(colon.body.positions(), ring);
     };
     const Eigen::Vector3d shift = (centre(b) - centre(a)).normalized() * 15e-3;
     for (const int node : a.nodes) {
