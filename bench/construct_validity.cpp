@@ -4,7 +4,8 @@
 // the time to the cecum when it was reached, the furthest the tip got along
 // the colon, the looped time and the loops formed (with the alpha loops
 // among them), the peak handle force, and the steps with the tip more than a
-// scope diameter into the wall. Then, per metric, on how many patients the
+// scope diameter into the wall, and the steps whose chain solve the scope's
+// step guard refused (Colonoscope::step). Then, per metric, on how many patients the
 // expert did better than the novice.
 //
 //   construct_validity [--seconds S] [--seeds 1,2,3,...]
@@ -39,6 +40,7 @@ struct Run {
     double alphaLoops = 0.0;
     double peakForce = 0.0;  ///< N
     long outside = 0;        ///< steps with the tip more than a scope diameter into the wall
+    long guarded = 0;        ///< steps with a chain solve refused by the step guard
 };
 
 Run runOperator(std::uint64_t seed, const procedure::OperatorStyle& style, double seconds)
@@ -54,6 +56,7 @@ Run runOperator(std::uint64_t seed, const procedure::OperatorStyle& style, doubl
     for (long s = 0; s < steps && !driver.finished(); ++s) {
         loop.step(driver.next(loop));
         run.outside += loop.lumen().contacts().back().depth > settings.scope.outerDiameter ? 1 : 0;
+        run.guarded += loop.scope().guardRetries() > 0 ? 1 : 0;
         run.furthest = std::max(run.furthest, loop.lastFrame().tipArcLength);
     }
     scoring::ScoringContext context;
@@ -76,9 +79,9 @@ Run runOperator(std::uint64_t seed, const procedure::OperatorStyle& style, doubl
 void printRun(const char* who, std::uint64_t seed, const Run& r)
 {
     const std::string cecum = r.timeToCecum >= 0.0 ? bench::shortest(r.timeToCecum) : "-";
-    std::printf("%-7s %-6llu %10s %8.3f / %-6.3f %9.1f %6.0f %6.0f %10.2f %9ld\n", who,
+    std::printf("%-7s %-6llu %10s %8.3f / %-6.3f %9.1f %6.0f %6.0f %10.2f %9ld %9ld\n", who,
                 static_cast<unsigned long long>(seed), cecum.c_str(), r.furthest, r.colonLength, r.loopedTime,
-                r.loops, r.alphaLoops, r.peakForce, r.outside);
+                r.loops, r.alphaLoops, r.peakForce, r.outside, r.guarded);
     std::fflush(stdout);
 }
 
@@ -105,10 +108,10 @@ int main(int argc, char** argv)
     std::printf(
         "expert and novice, %.1f s per run; cecum: time to cecum (s, - when not reached); furthest: "
         "tip along the colon / colon length (m); outside: steps with the tip more than a scope diameter "
-        "into the wall\n",
+        "into the wall; guarded: steps with a chain solve refused by the scope's step guard\n",
         seconds);
-    std::printf("%-7s %-6s %10s %17s %9s %6s %6s %10s %9s\n", "who", "seed", "cecum_s", "furthest_m",
-                "looped_s", "loops", "alpha", "peak_F_N", "outside");
+    std::printf("%-7s %-6s %10s %17s %9s %6s %6s %10s %9s %9s\n", "who", "seed", "cecum_s", "furthest_m",
+                "looped_s", "loops", "alpha", "peak_F_N", "outside", "guarded");
     int fasterToCecum = 0;
     int lessLooped = 0;
     int lessForce = 0;

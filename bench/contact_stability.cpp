@@ -1,9 +1,11 @@
 // Contact stability report: the scripted expert on several patients, for
 // several values of contact.loadRelaxation, and how often its tip moved
 // faster than 2 m/s (a step longer than 2 mm) or lay more than a scope
-// diameter into the wall. The figures behind the parameter's default.
+// diameter into the wall, and the steps whose chain solve the scope's step
+// guard refused. The figures behind the parameter's default, and behind
+// scope.maxNodeStep's (--max-node-step 1 leaves the guard out).
 //
-//   contact_stability [--seconds S] [--seeds 0,1,2,3] [--relaxation 1,0.5,0.3]
+//   contact_stability [--seconds S] [--seeds 0,1,2,3] [--relaxation 1,0.5,0.3] [--max-node-step M]
 //
 // Seed 0 is the default colon; any other seed is a generated patient.
 
@@ -33,13 +35,15 @@ struct Outcome {
     long outside = 0;     ///< steps with the tip more than a scope diameter into the wall
     double deepest = 0;   ///< m
     double furthest = 0;  ///< m along the colon
+    long guarded = 0;     ///< steps with a chain solve refused by the scope's step guard
 };
 
-Outcome runExpert(std::uint64_t seed, double relaxation, double seconds)
+Outcome runExpert(std::uint64_t seed, double relaxation, double maxNodeStep, double seconds)
 {
     const bench::Patient patient = bench::patientFromSeed(seed);
     procedure::ProcedureSettings settings = patient.settings;
     settings.contact.loadRelaxation = relaxation;
+    settings.scope.maxNodeStep = maxNodeStep;
     const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(patient.anatomy);
     procedure::ProcedureLoop loop(anatomy, settings);
     procedure::ScriptedOperator expert(procedure::expertStyle());
@@ -54,6 +58,7 @@ Outcome runExpert(std::uint64_t seed, double relaxation, double seconds)
         outcome.outside += depth > settings.scope.outerDiameter ? 1 : 0;
         outcome.deepest = std::max(outcome.deepest, depth);
         outcome.furthest = std::max(outcome.furthest, loop.lastFrame().tipArcLength);
+        outcome.guarded += loop.scope().guardRetries() > 0 ? 1 : 0;
         previous = tip;
     }
     return outcome;
@@ -66,6 +71,7 @@ int main(int argc, char** argv)
     double seconds = 50.0;
     std::vector<std::uint64_t> seeds{0, 1, 2, 3};
     std::vector<double> relaxations{1.0, 0.5, 0.3};
+    double maxNodeStep = scope::ScopeParameters{}.maxNodeStep;
     try {
         bench::forEachOption(argc, argv, [&](const std::string& flag, const std::string& value) {
             if (flag == "--seconds") {
@@ -74,27 +80,32 @@ int main(int argc, char** argv)
                 seeds = bench::parseSeeds(flag, value);
             } else if (flag == "--relaxation") {
                 relaxations = bench::parseList(flag, value, 0.05, 1.0);
+            } else if (flag == "--max-node-step") {
+                const auto& spec = scope::ScopeParameters::maxNodeStepSpec;
+                maxNodeStep = bench::parseList(flag, value, spec.minValue, spec.maxValue).front();
             } else {
                 throw std::invalid_argument("unknown option '" + flag +
-                                            "' (allowed: --seconds, --seeds, --relaxation)");
+                                            "' (allowed: --seconds, --seeds, --relaxation, --max-node-step)");
             }
         });
     } catch (const std::exception& error) {
         std::fprintf(stderr, "contact_stability: %s\n", error.what());
         return 2;
     }
-    std::printf("expert, %.1f s per run; fast: tip steps longer than 2 mm; outside: steps with the tip more "
-                "than a scope diameter into the wall\n",
-                seconds);
-    std::printf("%-10s %-6s %10s %10s %12s %12s\n", "relaxation", "seed", "fast", "outside", "deepest_mm",
-                "furthest_m");
+    std::printf(
+        "expert, %.1f s per run, scope.maxNodeStep %.4g m; fast: tip steps longer than 2 mm; outside: "
+        "steps with the tip more than a scope diameter into the wall; guarded: steps with a chain solve "
+        "refused by the step guard\n",
+        seconds, maxNodeStep);
+    std::printf("%-10s %-6s %10s %10s %12s %12s %9s\n", "relaxation", "seed", "fast", "outside", "deepest_mm",
+                "furthest_m", "guarded");
     for (const double relaxation : relaxations) {
         Outcome total;
         for (const std::uint64_t seed : seeds) {
-            const Outcome o = runExpert(seed, relaxation, seconds);
-            std::printf("%-10.2f %-6llu %10ld %10ld %12.1f %12.3f\n", relaxation,
+            const Outcome o = runExpert(seed, relaxation, maxNodeStep, seconds);
+            std::printf("%-10.2f %-6llu %10ld %10ld %12.1f %12.3f %9ld\n", relaxation,
                         static_cast<unsigned long long>(seed), o.fastSteps, o.outside, o.deepest * 1e3,
-                        o.furthest);
+                        o.furthest, o.guarded);
             std::fflush(stdout);
             total.fastSteps += o.fastSteps;
             total.outside += o.outside;

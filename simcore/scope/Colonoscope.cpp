@@ -26,6 +26,9 @@ void requireFinite(const std::string& what, const Eigen::Vector3d& v)
     }
 }
 
+constexpr int kGuardRetries = 3;           ///< solves the step guard may refuse in one step()
+constexpr double kGuardDampingGain = 4.0;  ///< what each refusal multiplies the joints' damping by
+
 }  // namespace
 
 Colonoscope::Colonoscope(const ScopeParameters& parameters) : m_parameters(parameters)
@@ -131,9 +134,12 @@ void Colonoscope::beginStep(double dt, double dampingRatio)
     const int n = m_rod.numNodes();
     m_rod.thetaStart = m_rod.theta;
     m_rod.damping.assign(static_cast<size_t>(n), Eigen::Vector3d::Zero());
+    m_guardRetries = 0;
+    m_stepStart.clear();  // a quasi-static step has no damping to raise: unguarded
     if (!(dt > 0.0) || !(dampingRatio > 0.0)) {
         return;
     }
+    m_stepStart = m_rod.position;
     const double element = m_rod.elementLength * m_parameters.linearMassDensity;
     double mass = 0.0;
     Eigen::Vector3d first = Eigen::Vector3d::Zero();
@@ -153,7 +159,31 @@ void Colonoscope::beginStep(double dt, double dampingRatio)
 
 void Colonoscope::step()
 {
-    solveChain(m_rod, static_cast<int>(m_parameters.solverIterations), m_parameters.solverRelaxation);
+    const int iterations = static_cast<int>(m_parameters.solverIterations);
+    if (m_stepStart.size() != m_rod.position.size()) {
+        solveChain(m_rod, iterations, m_parameters.solverRelaxation);
+        return;
+    }
+    m_thetaBefore = m_rod.theta;
+    solveChain(m_rod, iterations, m_parameters.solverRelaxation);
+    for (int retry = 0; retry < kGuardRetries && largestStepMotion() > m_parameters.maxNodeStep; ++retry) {
+        m_rod.theta = m_thetaBefore;
+        for (Eigen::Vector3d& d : m_rod.damping) {
+            d *= kGuardDampingGain;
+        }
+        m_rod.rebuild();
+        solveChain(m_rod, iterations, m_parameters.solverRelaxation);
+        ++m_guardRetries;
+    }
+}
+
+double Colonoscope::largestStepMotion() const
+{
+    double largest = 0.0;
+    for (size_t i = 0; i < m_stepStart.size(); ++i) {
+        largest = std::max(largest, (m_rod.position[i] - m_stepStart[i]).squaredNorm());
+    }
+    return std::sqrt(largest);
 }
 
 void Colonoscope::step(const std::function<void(DiscreteRod&)>& afterIteration)

@@ -39,6 +39,7 @@
 
 #include <functional>
 #include <span>
+#include <vector>
 
 namespace colonosim::scope {
 
@@ -88,10 +89,19 @@ public:
     /// damping ratio zeta: D_k = 2 zeta sqrt(K_k I_k) / dt.
     void beginStep(double dt, double dampingRatio);
     /// One time step: `solverIterations` chain iterations, warm-started.
+    /// Guarded after a damped beginStep(): when the solve leaves a node more
+    /// than `maxNodeStep` from where the step began, the joints are put back
+    /// where this call found them, their damping is raised fourfold, and the
+    /// chain is solved again, at most three times (the last solve is kept).
+    /// A rod loaded beyond what the damped chain iteration can follow (a
+    /// shaft pressed near its buckling load) otherwise diverges in one step.
     void step();
     /// The same, calling `afterIteration` on the rod after each iteration
     /// (loads that depend on the shape, such as contact, are updated there).
     void step(const std::function<void(DiscreteRod&)>& afterIteration);
+
+    /// Solves the step guard refused since the last beginStep().
+    [[nodiscard]] int guardRetries() const { return m_guardRetries; }
 
     [[nodiscard]] std::span<const Eigen::Vector3d> nodePositions() const { return m_rod.position; }
     [[nodiscard]] TipPose tipPose() const;
@@ -106,6 +116,8 @@ public:
 private:
     void updateBase();
     void updateDials();
+    /// The largest distance of a node from its place at beginStep(), m.
+    [[nodiscard]] double largestStepMotion() const;
 
     ScopeParameters m_parameters;
     DiscreteRod m_rod;
@@ -116,6 +128,11 @@ private:
     double m_shaftRotation = 0.0;
     double m_upDown = 0.0;
     double m_leftRight = 0.0;
+    // The step guard: node positions at beginStep() (empty: no guard), the
+    // joints as step() found them, and the solves refused this step.
+    std::vector<Eigen::Vector3d> m_stepStart;
+    std::vector<Eigen::Vector3d> m_thetaBefore;
+    int m_guardRetries = 0;
 };
 
 }  // namespace colonosim::scope

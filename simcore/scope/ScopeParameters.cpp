@@ -9,7 +9,7 @@ namespace colonosim::scope {
 
 namespace {
 using S = ScopeParameters;
-constexpr std::array<Field<S>, 12> kScopeFields{{
+constexpr std::array<Field<S>, 13> kScopeFields{{
     {&S::workingLengthSpec, &S::workingLength},
     {&S::outerDiameterSpec, &S::outerDiameter},
     {&S::flexuralRigiditySpec, &S::flexuralRigidity},
@@ -22,6 +22,7 @@ constexpr std::array<Field<S>, 12> kScopeFields{{
     {&S::iterationsSpec, &S::solverIterations},
     {&S::relaxationSpec, &S::solverRelaxation},
     {&S::jointDampingSpec, &S::jointDampingRatio},
+    {&S::maxNodeStepSpec, &S::maxNodeStep},
 }};
 }  // namespace
 

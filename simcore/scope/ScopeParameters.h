@@ -110,6 +110,17 @@ struct ScopeParameters {
         "model choice: the quasi-static rod has no inertia, so a load change moved the free tip tens of "
         "millimetres in one step; critical damping (1) removes those jumps and leaves the statics unchanged"};
 
+    static constexpr ParameterSpec maxNodeStepSpec{
+        "maxNodeStep",
+        "m",
+        0.010,
+        1.0e-4,
+        1.0,
+        "step guard: a chain solve that moves a node further than this from where the step began is refused "
+        "and solved again with the joints' damping raised fourfold (at most three times)",
+        "model choice: 10 m/s, twenty times a hand's fastest push (0.5 m/s); generated seed 3's expert "
+        "blew up when one solve moved the tip 76.6 mm and the next 365 mm (README, known limits)"};
+
     double workingLength = workingLengthSpec.defaultValue;
     double outerDiameter = outerDiameterSpec.defaultValue;
     double flexuralRigidity = flexuralRigiditySpec.defaultValue;
@@ -122,6 +133,7 @@ struct ScopeParameters {
     double solverIterations = iterationsSpec.defaultValue;
     double solverRelaxation = relaxationSpec.defaultValue;
     double jointDampingRatio = jointDampingSpec.defaultValue;
+    double maxNodeStep = maxNodeStepSpec.defaultValue;
 
     [[nodiscard]] static std::span<const Field<ScopeParameters>> fields();
     /// Throws ParameterError naming field, value and range; counts must be whole.

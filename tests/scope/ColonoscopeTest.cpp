@@ -208,7 +208,6 @@ double largestTipJump(double upDown, double tipLoad)
     }
     return largest;
 }
-}  // namespace
 
 // A node passing the anus must not make the tip jump: the bending section's
 // entering joint takes its share of the dial angle gradually, and the clamp
@@ -230,3 +229,62 @@ TEST(Colonoscope, TheClampJointStandsForTheStubAndHalfAnElement)
     EXPECT_NEAR(scope.rod().jointStiffness(scope.numInsertedNodes() - 1).x(), 2.0 * k.x(), 1e-12 * k.x());
     EXPECT_NEAR(scope.rod().jointStiffness(2).x(), k.x(), 1e-12 * k.x());
 }
+
+// The step guard. One damped step (1 ms, critical damping) of a scope
+// inserted 0.6 m along x under a lateral tip load: the tip's motion in the
+// step, and the solves the guard refused.
+struct GuardedStep {
+    double tipMotion = 0.0;  ///< m
+    int retries = 0;
+    Eigen::Vector3d tip = Eigen::Vector3d::Zero();
+};
+
+GuardedStep oneStep(double tipLoad, double maxNodeStep, double dampingRatio = 1.0)
+{
+    ScopeParameters parameters;
+    parameters.maxNodeStep = maxNodeStep;
+    Colonoscope scope(parameters);
+    scope.setHandlePose(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY());
+    scope.setInsertion(0.6);
+    const Eigen::Vector3d before = scope.tipPose().position;
+    scope.beginStep(1e-3, dampingRatio);
+    scope.clearLoads();
+    scope.setNodeForce(scope.numInsertedNodes() - 1, Eigen::Vector3d(0.0, -tipLoad, 0.0));
+    scope.step();
+    return {(scope.tipPose().position - before).norm(), scope.guardRetries(), scope.tipPose().position};
+}
+
+/// N on the tip: thrown 187 mm in one step unguarded, 3.5 mm guarded (three refusals).
+constexpr double kThrowingLoad = 10.0;
+
+TEST(Colonoscope, TheStepGuardRefusesASolveThatThrowsANodeTooFar)
+{
+    const double limit = ScopeParameters{}.maxNodeStep;
+    const GuardedStep free = oneStep(kThrowingLoad, ScopeParameters::maxNodeStepSpec.maxValue);
+    const GuardedStep guarded = oneStep(kThrowingLoad, limit);
+    EXPECT_EQ(free.retries, 0);
+    EXPECT_GT(free.tipMotion, 3.0 * limit) << "the load must throw the unguarded tip well beyond the limit";
+    EXPECT_GT(guarded.retries, 0);
+    EXPECT_LE(guarded.tipMotion, limit);
+    EXPECT_GT(guarded.tipMotion, 0.1 * limit) << "the guarded step still moves the way the load pushes";
+    EXPECT_LT(guarded.tip.y(), 0.0);
+}
+
+TEST(Colonoscope, AStepWithinTheGuardsLimitKeepsItsBits)
+{
+    const GuardedStep free = oneStep(0.1, ScopeParameters::maxNodeStepSpec.maxValue);
+    const GuardedStep guarded = oneStep(0.1, ScopeParameters{}.maxNodeStep);
+    EXPECT_EQ(guarded.retries, 0);
+    EXPECT_GT(guarded.tipMotion, 0.0);
+    EXPECT_EQ(guarded.tip, free.tip);
+}
+
+TEST(Colonoscope, AQuasiStaticStepIsNotGuarded)
+{
+    // No damping to raise: the rod goes straight to its equilibrium.
+    const GuardedStep step = oneStep(kThrowingLoad, ScopeParameters{}.maxNodeStep, 0.0);
+    EXPECT_EQ(step.retries, 0);
+    EXPECT_GT(step.tipMotion, ScopeParameters{}.maxNodeStep);
+}
+
+}  // namespace
