@@ -259,7 +259,7 @@ constexpr double kThrowingLoad = 10.0;
 
 TEST(Colonoscope, TheStepGuardRefusesASolveThatThrowsANodeTooFar)
 {
-    const double limit = ScopeParameters{}.maxNodeStep;
+    const double limit = 0.010;  // m: 10 m/s
     const GuardedStep free = oneStep(kThrowingLoad, ScopeParameters::maxNodeStepSpec.maxValue);
     const GuardedStep guarded = oneStep(kThrowingLoad, limit);
     EXPECT_EQ(free.retries, 0);
@@ -273,7 +273,7 @@ TEST(Colonoscope, TheStepGuardRefusesASolveThatThrowsANodeTooFar)
 TEST(Colonoscope, AStepWithinTheGuardsLimitKeepsItsBits)
 {
     const GuardedStep free = oneStep(0.1, ScopeParameters::maxNodeStepSpec.maxValue);
-    const GuardedStep guarded = oneStep(0.1, ScopeParameters{}.maxNodeStep);
+    const GuardedStep guarded = oneStep(0.1, 0.010);
     EXPECT_EQ(guarded.retries, 0);
     EXPECT_GT(guarded.tipMotion, 0.0);
     EXPECT_EQ(guarded.tip, free.tip);
@@ -282,9 +282,9 @@ TEST(Colonoscope, AStepWithinTheGuardsLimitKeepsItsBits)
 TEST(Colonoscope, AQuasiStaticStepIsNotGuarded)
 {
     // No damping to raise: the rod goes straight to its equilibrium.
-    const GuardedStep step = oneStep(kThrowingLoad, ScopeParameters{}.maxNodeStep, 0.0);
+    const GuardedStep step = oneStep(kThrowingLoad, 0.010, 0.0);
     EXPECT_EQ(step.retries, 0);
-    EXPECT_GT(step.tipMotion, ScopeParameters{}.maxNodeStep);
+    EXPECT_GT(step.tipMotion, 0.010);
 }
 
 }  // namespace
