@@ -96,8 +96,9 @@ public:
     /// A rod loaded beyond what the damped chain iteration can follow (a
     /// shaft pressed near its buckling load) otherwise diverges in one step.
     void step();
-    /// The same, calling `afterIteration` on the rod after each iteration
-    /// (loads that depend on the shape, such as contact, are updated there).
+    /// The same iterations, calling `afterIteration` on the rod after each
+    /// (loads that depend on the shape, such as contact, are updated there);
+    /// not guarded: its caller changes the loads between iterations.
     void step(const std::function<void(DiscreteRod&)>& afterIteration);
 
     /// Solves the step guard refused since the last beginStep().

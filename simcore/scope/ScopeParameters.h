@@ -120,8 +120,7 @@ struct ScopeParameters {
         "and solved again with the joints' damping raised fourfold (at most three times); 1 m: off in "
         "practice",
         "model choice: 10 mm (10 m/s) holds generated seed 3's expert, which blew up when one solve moved "
-        "the "
-        "tip 76.6 mm and the next 365 mm, but raises two hard cases' peak handle force above the haptic "
+        "the tip 76.6 mm and the next 365 mm, but raises two hard cases' peak handle force above the haptic "
         "device's 25 N (35.5 and 31.1 N), so the default leaves it off until the contact no longer needs "
         "the shaft's unphysical jumps (README, known limits)"};
 
