@@ -135,17 +135,27 @@ LoopKind LoopDetector::update(const Eigen::Matrix3Xd& shaft, double insertion,
         segment[static_cast<size_t>(i)] =
             geometry::sampleCentreline(m_colon, s[static_cast<size_t>(i)]).segment;
     }
+    // Loops are in the insertion tube: the nodes up to the base of the
+    // bending section, the first at least m_bendingSection behind the tip (a
+    // tip the dials hook back is not shaft stored in a loop).
+    Eigen::Index base = n - 1;
+    double beyond = 0.0;
+    while (base > 0 && beyond < m_bendingSection) {
+        beyond += (shaft.col(base) - shaft.col(base - 1)).norm();
+        --base;
+    }
+    const Eigen::Index tube = base + 1;
     // Excess shaft per segment.
     std::array<double, geometry::kNumSegments> shaftLength{};
     std::array<double, geometry::kNumSegments> lo{};
     std::array<double, geometry::kNumSegments> hi{};
     lo.fill(std::numeric_limits<double>::infinity());
     hi.fill(-std::numeric_limits<double>::infinity());
-    for (Eigen::Index i = 0; i < n; ++i) {
+    for (Eigen::Index i = 0; i < tube; ++i) {
         const auto g = static_cast<size_t>(segment[static_cast<size_t>(i)]);
         lo[g] = std::min(lo[g], s[static_cast<size_t>(i)]);
         hi[g] = std::max(hi[g], s[static_cast<size_t>(i)]);
-        if (i + 1 < n && segment[static_cast<size_t>(i + 1)] == segment[static_cast<size_t>(i)]) {
+        if (i + 1 < tube && segment[static_cast<size_t>(i + 1)] == segment[static_cast<size_t>(i)]) {
             shaftLength[g] += (shaft.col(i + 1) - shaft.col(i)).norm();
         }
     }
@@ -161,7 +171,7 @@ LoopKind LoopDetector::update(const Eigen::Matrix3Xd& shaft, double insertion,
     }
     // Shape of the looped part: the nodes in the worst segment, in order.
     std::vector<int> looped;
-    for (Eigen::Index i = 0; i < n; ++i) {
+    for (Eigen::Index i = 0; i < tube; ++i) {
         if (segment[static_cast<size_t>(i)] == signals.segment) {
             looped.push_back(static_cast<int>(i));
         }
@@ -170,7 +180,7 @@ LoopKind LoopDetector::update(const Eigen::Matrix3Xd& shaft, double insertion,
     // the loop closes on the shaft that leads into it is included.
     if (!looped.empty()) {
         const Eigen::Index first = std::max<Eigen::Index>(0, looped.front() - 2);
-        const Eigen::Index last = std::min<Eigen::Index>(n - 1, looped.back() + 2);
+        const Eigen::Index last = std::min<Eigen::Index>(tube - 1, looped.back() + 2);
         const Eigen::Matrix3Xd part = shaft.middleCols(first, last - first + 1);
         // Relative to the colon's own path over the same stretch: a shaft that
         // merely follows a sigmoid which crosses itself in the anterior view
@@ -180,6 +190,10 @@ LoopKind LoopDetector::update(const Eigen::Matrix3Xd& shaft, double insertion,
         signals.turning = coronalTurning(part) - coronalTurning(path);
     }
     signals.tipArcLength = s.back();
+    // The stored shaft, at the base of the bending section: the shaft inside
+    // up to that node (the insertion less the shaft beyond it) against where
+    // the node is along the colon.
+    signals.storedShaft = insertion - beyond - s[static_cast<size_t>(base)];
 
     // Paradoxical motion over the last 2 cm of insertion.
     constexpr double kWindow = 0.02;  // m
@@ -195,8 +209,8 @@ LoopKind LoopDetector::update(const Eigen::Matrix3Xd& shaft, double insertion,
     signals.tipAdvanceRatio = m_signals.tipAdvanceRatio;
 
     // Hysteresis: a loop forms above the threshold and resolves below 60% of it.
-    const bool looping = m_current == LoopKind::None ? signals.excessShaft > m_threshold
-                                                     : signals.excessShaft > 0.6 * m_threshold;
+    const double measure = std::max(signals.excessShaft, signals.storedShaft);
+    const bool looping = m_current == LoopKind::None ? measure > m_threshold : measure > 0.6 * m_threshold;
     signals.reading = looping ? classify(signals) : LoopKind::None;
     m_signals = signals;
     if (!looping || m_current == LoopKind::None) {

@@ -2,10 +2,22 @@
 /// \file
 /// Loops in the colonoscope's shaft, from its shape relative to the colon,
 /// as an endoscopist reads them on magnetic endoscope imaging (Shah et al.,
-/// Gut 2000; reference/clinical-assessment.md lists the types):
+/// Gut 2000; reference/clinical-assessment.md lists the types), in the
+/// insertion tube (the dial-steered bending section is left out):
 ///   - excess shaft: each scope node is located on the colon centreline (arc
 ///     length s); in each segment, the shaft length whose nodes lie there
 ///     minus the colon length they span. Looping stores shaft in a segment.
+///   - stored shaft: the insertion length minus the tip's arc length along
+///     the colon at rest. The scope carries the mobile colon with it when it
+///     bows it on its mesentery, so a shaft that bows the sigmoid stores no
+///     excess in the segment (the colon's path lengthens with it); the shaft
+///     is in the patient all the same, and an endoscopist reads it from the
+///     insertion length against where the tip is (a straight scope reaches
+///     the cecum with less shaft in than the colon's length; a pleated colon
+///     makes the stored shaft negative). It is measured at the base of the
+///     tip's bending section (setBendingSection()): a tip hooked or
+///     retroflexed by the dials lies behind the shaft's end along the colon,
+///     and that is not shaft stored in a loop.
 ///   - paradoxical motion: insertion advanced against tip advance along the
 ///     colon over the last window; the clinical warning sign is a tip that
 ///     stops moving 1:1 with the shaft (ratio above 2).
@@ -21,7 +33,10 @@
 ///   sigmoid without a crossing: N;
 ///   transverse (or hepatic flexure): GammaDeepTransverse;
 ///   splenic flexure with a crossing: ReverseSplenic;
-/// and None while the excess is below the threshold.
+/// and None while both the excess and the stored shaft are below the
+/// threshold. A loop read from the stored shaft alone is placed in the
+/// segment with the most excess (the sigmoid's N loop when the shaft bows a
+/// colon that moves with it).
 /// Hysteresis: a loop forms above the threshold and resolves below 60% of
 /// it; once formed, its type changes only when another type has been read in
 /// `typeDwell` analyses in a row (a shaft on the border of two segments, or
@@ -33,6 +48,7 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <span>
 #include <string_view>
 
@@ -43,7 +59,10 @@ enum class LoopKind { None, N, Alpha, ReverseAlpha, GammaDeepTransverse, Reverse
 [[nodiscard]] std::string_view loopName(LoopKind kind);
 
 struct LoopSignals {
-    double excessShaft = 0.0;                               ///< in the worst segment, m
+    double excessShaft = 0.0;  ///< in the worst segment, m
+    /// Shaft inserted up to the base of the bending section minus that node's
+    /// arc length along the colon at rest, m.
+    double storedShaft = 0.0;
     geometry::Segment segment = geometry::Segment::Rectum;  ///< where the excess is
     int crossings = 0;                                      ///< coronal self-crossings of the shaft
     double turning =
@@ -55,12 +74,18 @@ struct LoopSignals {
 
 class LoopDetector {
 public:
-    /// `excessThreshold` (m): the stored shaft that makes a loop (default 8 cm).
+    /// `excessThreshold` (m): the excess shaft in a segment, or the stored
+    /// shaft, that makes a loop (default 8 cm).
     /// `typeDwell`: analyses in a row a new type must be read before a
     /// formed loop takes it (default 20: 0.2 s at the loop's 100 Hz analyses,
     /// shorter than any real change of loop, longer than a flicker).
     explicit LoopDetector(const geometry::Centreline& colon, double excessThreshold = 0.08,
                           int typeDwell = 20);
+
+    /// The length of the tip's bending section, m (default 0): loops are read
+    /// in the insertion tube, the nodes up to the first at least this far
+    /// behind the tip, and the stored shaft is measured at that node.
+    void setBendingSection(double length) { m_bendingSection = std::max(0.0, length); }
 
     /// Analyses the shaft (inserted nodes, anus to tip) at insertion length
     /// `insertion` (m). Call at the recorder rate.
@@ -87,6 +112,7 @@ private:
     const geometry::Centreline& m_colon;
     double m_threshold;
     int m_typeDwell;
+    double m_bendingSection = 0.0;  ///< m
     LoopKind m_current = LoopKind::None;
     LoopKind m_pending = LoopKind::None;  ///< a type read instead of the current one
     int m_pendingReads = 0;               ///< analyses in a row it has been read

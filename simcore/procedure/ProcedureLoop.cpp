@@ -76,6 +76,7 @@ ProcedureLoop::ProcedureLoop(const geometry::ColonAnatomy& anatomy, const Proced
     }
     const geometry::Centreline& c = anatomy.centreline;
     m_scope.setHandlePose(c.points.front(), c.tangents.front(), c.normals.front());
+    m_loops.setBendingSection(settings.scope.bendingSectionLength);
     m_trace.loopStep = settings.stepping.loopStep;
     m_viewMarks.reserve(BleedingMarks::kMaxMarks);
 }

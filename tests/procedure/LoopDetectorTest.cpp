@@ -163,6 +163,55 @@ TEST(LoopDetector, TipThatStopsMovingWithTheShaftIsSeen)
     EXPECT_NEAR(moving.signals().tipAdvanceRatio, 1.0, 0.35);
 }
 
+// A scope that bows a mobile colon carries the colon with it: the shaft
+// follows the lumen's path, so no segment holds excess shaft, yet more shaft
+// is in the patient than the colon's length up to the tip. The insertion
+// against the tip's place along the colon reads that stored shaft, as an
+// endoscopist reads it; a pleated colon (less shaft in than colon behind the
+// tip) stores none.
+TEST(LoopDetector, ShaftStoredInAColonThatMovesWithItIsALoop)
+{
+    const double at = segmentMiddle(Segment::Descending);
+    const Eigen::Matrix3Xd s = shaft(at, 0.0, Extra::None);
+    const double length = shaftLength(s);
+    LoopDetector detector(anatomy().centreline);
+    EXPECT_EQ(detector.update(s, length), LoopKind::None);
+    EXPECT_NEAR(detector.signals().storedShaft, 0.0, 0.02) << "m: a shaft that follows the colon stores none";
+    EXPECT_EQ(detector.update(s, length + 0.05), LoopKind::None) << "5 cm stored: below the 8 cm threshold";
+    EXPECT_EQ(detector.update(s, length + 0.12), LoopKind::N);
+    EXPECT_NEAR(detector.signals().storedShaft, 0.12, 0.02);
+    EXPECT_LT(detector.signals().excessShaft, 0.02) << "m: no segment holds the shaft as excess";
+    // Hysteresis: still looped above 60% of the threshold, resolved below it.
+    EXPECT_EQ(detector.update(s, length + 0.06), LoopKind::N);
+    EXPECT_EQ(detector.update(s, length + 0.03), LoopKind::None);
+    // A colon pleated on the shaft: the tip is further along than the shaft is long.
+    EXPECT_EQ(detector.update(s, length - 0.20), LoopKind::None);
+    EXPECT_LT(detector.signals().storedShaft, -0.15);
+}
+
+// A tip hooked back by the dials lies behind the shaft's end along the colon:
+// measured at the tip, that reads as shaft stored; measured at the base of
+// the bending section, as it is, it does not.
+TEST(LoopDetector, AHookedTipIsNotStoredShaft)
+{
+    const double at = segmentMiddle(Segment::Descending);
+    Eigen::Matrix3Xd hooked = shaft(at, 0.0, Extra::None);
+    const Eigen::Index n = hooked.cols();
+    constexpr Eigen::Index kBent = 5;  // nodes of a 10 cm bending section, 2 cm apart
+    const Eigen::Index base = n - 1 - kBent;
+    for (Eigen::Index j = 1; j <= kBent; ++j) {
+        hooked.col(base + j) = hooked.col(base - j) + Eigen::Vector3d(0.0, -0.01, 0.0);
+    }
+    const double insertion = shaftLength(hooked);
+    LoopDetector atTheTip(anatomy().centreline);
+    atTheTip.update(hooked, insertion);
+    EXPECT_GT(atTheTip.signals().storedShaft, 0.15) << "m: the hook read as stored shaft at the tip";
+    LoopDetector atTheBase(anatomy().centreline);
+    atTheBase.setBendingSection(0.10);
+    EXPECT_EQ(atTheBase.update(hooked, insertion), LoopKind::None);
+    EXPECT_NEAR(atTheBase.signals().storedShaft, 0.0, 0.03);
+}
+
 TEST(LoopDetector, LoopResolvesWithHysteresis)
 {
     LoopDetector detector(anatomy().centreline);
