@@ -8,15 +8,15 @@
 ///     length s); in each segment, the shaft length whose nodes lie there
 ///     minus the colon length they span. Looping stores shaft in a segment.
 ///   - stored shaft: the shaft inserted up to the base of the bending
-///     section minus that node's arc length along the colon at rest. The scope carries the mobile colon with it when it
-///     bows it on its mesentery, so a shaft that bows the sigmoid stores no
-///     excess in the segment (the colon's path lengthens with it); the shaft
-///     is in the patient all the same, and an endoscopist reads it from the
-///     insertion length against where the tip is (a pleated colon makes the
-///     stored shaft negative). The bending section (setBendingSection()) is
-///     left out because a tip hooked or retroflexed by the dials lies behind
-///     the shaft's end along the colon, and that is not shaft stored in a
-///     loop.
+///     section minus that node's arc length along the colon at rest. The
+///     scope carries the mobile colon with it when it bows it on its
+///     mesentery, so a shaft that bows the sigmoid stores no excess in the
+///     segment (the colon's path lengthens with it); the shaft is in the
+///     patient all the same, and an endoscopist reads it from the insertion
+///     length against where the tip is (a pleated colon makes the stored
+///     shaft negative). The bending section (setBendingSection()) is left
+///     out because a tip hooked or retroflexed by the dials lies behind the
+///     shaft's end along the colon, and that is not shaft stored in a loop.
 ///   - paradoxical motion: insertion advanced against tip advance along the
 ///     colon over the last window; the clinical warning sign is a tip that
 ///     stops moving 1:1 with the shaft (ratio above 2).
