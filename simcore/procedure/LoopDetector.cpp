@@ -75,8 +75,36 @@ double coronalTurning(const Eigen::Matrix3Xd& polyline)
     return turning;
 }
 
-LoopDetector::LoopDetector(const geometry::Centreline& colon, double excessThreshold, int typeDwell)
-    : m_colon(colon), m_threshold(excessThreshold), m_typeDwell(std::max(1, typeDwell))
+namespace {
+using L = LoopParameters;
+constexpr std::array<params::Field<L>, 5> kLoopFields{{
+    {&L::thresholdSpec, &L::threshold},
+    {&L::resolveFractionSpec, &L::resolveFraction},
+    {&L::typeDwellSpec, &L::typeDwell},
+    {&L::analysisIntervalSpec, &L::analysisInterval},
+    {&L::paradoxWindowSpec, &L::paradoxWindow},
+}};
+}  // namespace
+
+std::span<const params::Field<LoopParameters>> LoopParameters::fields()
+{
+    return kLoopFields;
+}
+
+void LoopParameters::validate() const
+{
+    params::validateFields<LoopParameters>("loops", kLoopFields, *this);
+}
+
+int LoopParameters::typeDwellAnalyses() const
+{
+    // The tolerance keeps 0.2 s / 0.01 s at 20 analyses, not 21.
+    return std::max(1, static_cast<int>(std::ceil(typeDwell / analysisInterval - 1e-9)));
+}
+
+LoopDetector::LoopDetector(const geometry::Centreline& colon, const LoopParameters& parameters)
+    : m_colon(colon), m_parameters((parameters.validate(), parameters)),
+      m_typeDwell(parameters.typeDwellAnalyses())
 {}
 
 double LoopDetector::locate(const Eigen::Vector3d& p) const
@@ -195,12 +223,12 @@ LoopKind LoopDetector::update(const Eigen::Matrix3Xd& shaft, double insertion,
     // the node is along the colon.
     signals.storedShaft = insertion - beyond - s[static_cast<size_t>(base)];
 
-    // Paradoxical motion over the last 2 cm of insertion.
-    constexpr double kWindow = 0.02;  // m
+    // Paradoxical motion over the last paradoxWindow of insertion.
+    const double window = m_parameters.paradoxWindow;
     if (insertion < m_windowInsertion) {
         m_windowInsertion = insertion;
         m_windowTip = signals.tipArcLength;
-    } else if (insertion - m_windowInsertion >= kWindow) {
+    } else if (insertion - m_windowInsertion >= window) {
         const double tipAdvance = signals.tipArcLength - m_windowTip;
         m_signals.tipAdvanceRatio = (insertion - m_windowInsertion) / std::max(tipAdvance, 1e-3);
         m_windowInsertion = insertion;
@@ -208,9 +236,11 @@ LoopKind LoopDetector::update(const Eigen::Matrix3Xd& shaft, double insertion,
     }
     signals.tipAdvanceRatio = m_signals.tipAdvanceRatio;
 
-    // Hysteresis: a loop forms above the threshold and resolves below 60% of it.
+    // Hysteresis: a loop forms above the threshold and resolves below resolveFraction of it.
     const double measure = std::max(signals.excessShaft, signals.storedShaft);
-    const bool looping = m_current == LoopKind::None ? measure > m_threshold : measure > 0.6 * m_threshold;
+    const double threshold = m_parameters.threshold;
+    const bool looping = m_current == LoopKind::None ? measure > threshold
+                                                     : measure > m_parameters.resolveFraction * threshold;
     signals.reading = looping ? classify(signals) : LoopKind::None;
     m_signals = signals;
     if (!looping || m_current == LoopKind::None) {
@@ -219,7 +249,7 @@ LoopKind LoopDetector::update(const Eigen::Matrix3Xd& shaft, double insertion,
     } else if (signals.reading == m_current) {
         m_pendingReads = 0;
     } else {
-        // The type's own hysteresis: another type must be read typeDwell times in a row.
+        // The type's own hysteresis: another type must be read for typeDwell without a break.
         m_pendingReads = signals.reading == m_pending ? m_pendingReads + 1 : 1;
         m_pending = signals.reading;
         if (m_pendingReads >= m_typeDwell) {

@@ -36,14 +36,15 @@
 /// threshold. A loop read from the stored shaft alone is placed in the
 /// segment with the most excess (the sigmoid's N loop when the shaft bows a
 /// colon that moves with it).
-/// Hysteresis: a loop forms above the threshold and resolves below 60% of
-/// it; once formed, its type changes only when another type has been read in
-/// `typeDwell` analyses in a row (a shaft on the border of two segments, or
+/// Hysteresis: a loop forms above the threshold and resolves below
+/// `resolveFraction` of it; once formed, its type changes only when another
+/// type has been read for `typeDwell` (a shaft on the border of two segments, or
 /// with a crossing that comes and goes, would otherwise flicker between
 /// types from one analysis to the next, and each flicker would be a new loop
 /// event in the recording).
 
 #include "simcore/geometry/Centreline.h"
+#include "simcore/params/Parameter.h"
 
 #include <Eigen/Core>
 
@@ -56,6 +57,67 @@ namespace colonosim::procedure {
 enum class LoopKind { None, N, Alpha, ReverseAlpha, GammaDeepTransverse, ReverseSplenic };
 
 [[nodiscard]] std::string_view loopName(LoopKind kind);
+
+/// The loop detector's declared parameters (`colonosim params`).
+struct LoopParameters {
+    using Spec = params::ParameterSpec;
+    static constexpr Spec thresholdSpec{
+        "threshold",
+        "m",
+        0.08,
+        0.02,
+        0.30,
+        "excess shaft in one segment, or shaft stored ahead of the bending section, that makes a loop",
+        "assumption: no published length; six outer diameters of the 13 mm scope, above the shaft a "
+        "straight insertion stores as the colon gives way (3.0 cm when the hooked hard case begins "
+        "to push), below the 9.2 cm that push stores"};
+    static constexpr Spec resolveFractionSpec{
+        "resolveFraction",
+        "1",
+        0.6,
+        0.1,
+        0.95,
+        "fraction of the threshold below which a formed loop is resolved",
+        "model choice: hysteresis, so that a loop held at the threshold does not form and resolve "
+        "from one analysis to the next"};
+    static constexpr Spec typeDwellSpec{
+        "typeDwell",
+        "s",
+        0.2,
+        0.01,
+        5.0,
+        "time another type must be read without a break before a formed loop takes it",
+        "model choice: shorter than any real change of loop, longer than a flicker of a shaft on the "
+        "border of two segments"};
+    static constexpr Spec analysisIntervalSpec{"analysisInterval",
+                                               "s",
+                                               0.01,
+                                               0.001,
+                                               0.1,
+                                               "time between two analyses of the shaft's shape",
+                                               "model choice: the recorder's 100 Hz sampling rate"};
+    static constexpr Spec paradoxWindowSpec{
+        "paradoxWindow",
+        "m",
+        0.02,
+        0.005,
+        0.2,
+        "insertion over which the tip's advance is compared with the shaft's",
+        "reference/clinical-assessment.md: the warning sign is a tip that stops moving 1:1 with the "
+        "shaft; 2 cm, a push an endoscopist feels as one"};
+
+    double threshold = thresholdSpec.defaultValue;
+    double resolveFraction = resolveFractionSpec.defaultValue;
+    double typeDwell = typeDwellSpec.defaultValue;
+    double analysisInterval = analysisIntervalSpec.defaultValue;
+    double paradoxWindow = paradoxWindowSpec.defaultValue;
+
+    [[nodiscard]] static std::span<const params::Field<LoopParameters>> fields();
+    /// Throws ParameterError naming the field, the value and the range.
+    void validate() const;
+    /// Analyses in a row that make up `typeDwell` (at least 1).
+    [[nodiscard]] int typeDwellAnalyses() const;
+};
 
 struct LoopSignals {
     double excessShaft = 0.0;  ///< in the worst segment, m
@@ -73,13 +135,8 @@ struct LoopSignals {
 
 class LoopDetector {
 public:
-    /// `excessThreshold` (m): the excess shaft in a segment, or the stored
-    /// shaft, that makes a loop (default 8 cm).
-    /// `typeDwell`: analyses in a row a new type must be read before a
-    /// formed loop takes it (default 20: 0.2 s at the loop's 100 Hz analyses,
-    /// shorter than any real change of loop, longer than a flicker).
-    explicit LoopDetector(const geometry::Centreline& colon, double excessThreshold = 0.08,
-                          int typeDwell = 20);
+    /// Throws ParameterError for a parameter outside its declared range.
+    explicit LoopDetector(const geometry::Centreline& colon, const LoopParameters& parameters = {});
 
     /// The length of the tip's bending section, m (default 0): loops are read
     /// in the insertion tube, the nodes up to the first at least this far
@@ -87,12 +144,13 @@ public:
     void setBendingSection(double length) { m_bendingSection = std::max(0.0, length); }
 
     /// Analyses the shaft (inserted nodes, anus to tip) at insertion length
-    /// `insertion` (m). Call at the recorder rate.
+    /// `insertion` (m). Call every LoopParameters::analysisInterval.
     LoopKind update(const Eigen::Matrix3Xd& shaft, double insertion, std::span<const double> nodeArcs = {});
 
     [[nodiscard]] LoopKind current() const { return m_current; }
     [[nodiscard]] const geometry::Centreline& colon() const { return m_colon; }
     [[nodiscard]] const LoopSignals& signals() const { return m_signals; }
+    [[nodiscard]] const LoopParameters& parameters() const { return m_parameters; }
 
     /// Arc length along the colon of the centreline point nearest to p, m.
     [[nodiscard]] double locate(const Eigen::Vector3d& p) const;
@@ -109,8 +167,8 @@ private:
     [[nodiscard]] Eigen::Matrix3Xd colonPath(double from, double to) const;
 
     const geometry::Centreline& m_colon;
-    double m_threshold;
-    int m_typeDwell;
+    LoopParameters m_parameters;
+    int m_typeDwell;                ///< analyses
     double m_bendingSection = 0.0;  ///< m
     LoopKind m_current = LoopKind::None;
     LoopKind m_pending = LoopKind::None;  ///< a type read instead of the current one

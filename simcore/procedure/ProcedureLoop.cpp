@@ -14,7 +14,6 @@ namespace colonosim::procedure {
 
 namespace {
 static_assert(BleedingMarks::kMaxMarks <= render::kMaxBleedingMarks, "the view draws every mark");
-constexpr int kLoopDetectionInterval = 10;  ///< loop steps between loop analyses (100 Hz at 1 kHz)
 
 RecorderParameters withColonLength(RecorderParameters p, double length)
 {
@@ -53,7 +52,7 @@ ProcedureLoop::ProcedureLoop(const geometry::ColonAnatomy& anatomy, const Proced
       m_scope(settings.scope), m_contact(anatomy, settings.contact),
       m_coupling(settings.contact.contactStiffness, settings.contact.stepLimit, settings.stepping.loopStep,
                  settings.contact.loadRelaxation),
-      m_loops(anatomy.centreline),
+      m_loops(anatomy.centreline, settings.loops),
       m_discomfort(withFailureStrain(settings.discomfort, settings.tissue.mesenteryMaxStrain)),
       m_lesions(anatomy, settings.lesions, settings.viewing), m_bleeding(settings.bleeding),
       m_recorder(withColonLength(settings.recorder, anatomy.centreline.length()))
@@ -77,6 +76,8 @@ ProcedureLoop::ProcedureLoop(const geometry::ColonAnatomy& anatomy, const Proced
     const geometry::Centreline& c = anatomy.centreline;
     m_scope.setHandlePose(c.points.front(), c.tangents.front(), c.normals.front());
     m_loops.setBendingSection(settings.scope.bendingSectionLength);
+    m_loopAnalysisSteps = std::max(
+        1, static_cast<int>(std::lround(settings.loops.analysisInterval / settings.stepping.loopStep)));
     m_trace.loopStep = settings.stepping.loopStep;
     m_viewMarks.reserve(BleedingMarks::kMaxMarks);
 }
@@ -249,7 +250,7 @@ void ProcedureLoop::observe()
     f.input = m_input;
     f.tipPosition = tip.position;
     f.tipDirection = tip.rotation.col(2);
-    if (m_steps % kLoopDetectionInterval == 0) {
+    if (m_steps % m_loopAnalysisSteps == 0) {
         const auto& stations = m_contact.contacts();
         m_nodeArcs.resize(stations.size());
         for (size_t i = 0; i < stations.size(); ++i) {

@@ -56,6 +56,7 @@ struct ProcedureSettings {
     scope::ScopeParameters scope;
     contact::ContactParameters contact;
     RecorderParameters recorder;
+    LoopParameters loops;
     DiscomfortParameters discomfort;
     BleedingParameters bleeding;
     /// The case's lesions (LesionView.h), and the view they are seen by.
@@ -141,6 +142,8 @@ private:
     ContactCoupling m_coupling;
     std::vector<double> m_nodeArcs;  ///< each scope node's place along the colon (lumen station), m
     LoopDetector m_loops;
+    int m_loopAnalysisSteps =
+        1;  ///< loop steps between two analyses of the shaft (LoopParameters::analysisInterval)
     DiscomfortModel m_discomfort;
     LesionView m_lesions;
     BleedingMarks m_bleeding;

@@ -44,6 +44,7 @@ Recorder::Recorder(const RecorderParameters& parameters) : m_parameters(paramete
     params::require("recorder", RecorderParameters::sampleIntervalSpec, parameters.sampleInterval);
     params::require("recorder", RecorderParameters::excessiveForceSpec, parameters.excessiveForce);
     params::require("recorder", RecorderParameters::redOutSpec, parameters.redOutDistance);
+    params::require("recorder", RecorderParameters::cecumDepthSpec, parameters.cecumDepth);
 }
 
 void Recorder::event(double time, EventKind kind, std::string detail)

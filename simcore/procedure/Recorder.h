@@ -116,10 +116,20 @@ struct RecorderParameters {
                                                       0.02,
                                                       "lens-to-wall distance below which the view is red",
                                                       "assumption: the lens touches the mucosa"};
+    static constexpr params::ParameterSpec cecumDepthSpec{
+        "cecumDepth",
+        "m",
+        0.02,
+        0.0,
+        0.1,
+        "distance before the end of the colon at which the tip counts as in the cecum",
+        "reference/clinical-assessment.md: the cecum is reached when its landmarks (ileocecal valve, "
+        "appendiceal orifice) are in view; assumption: from 2 cm, well within the 5 cm working distance, "
+        "the tip sees the cecal pole"};
     double sampleInterval = sampleIntervalSpec.defaultValue;
     double excessiveForce = excessiveForceSpec.defaultValue;
     double redOutDistance = redOutSpec.defaultValue;
-    double cecumDepth = 0.02;   ///< m before the end of the colon counted as "cecum reached"
+    double cecumDepth = cecumDepthSpec.defaultValue;
     double colonLength = 1.66;  ///< m, from the anatomy
 };
 

@@ -8,7 +8,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
+#include <string>
 
 namespace colonosim::procedure {
 namespace {
@@ -223,11 +225,14 @@ TEST(LoopDetector, LoopResolvesWithHysteresis)
 }
 
 // A formed loop keeps its type while the reading flickers, and takes a new
-// type once that has been read typeDwell analyses in a row.
+// type once that has been read for typeDwell without a break.
 TEST(LoopDetector, ALoopsTypeChangesOnlyOnASteadyNewReading)
 {
     constexpr int kDwell = 5;
-    LoopDetector detector(anatomy().centreline, 0.08, kDwell);
+    LoopParameters parameters;
+    parameters.typeDwell = kDwell * parameters.analysisInterval;
+    ASSERT_EQ(parameters.typeDwellAnalyses(), kDwell);
+    LoopDetector detector(anatomy().centreline, parameters);
     const double at = segmentMiddle(Segment::Sigmoid);
     const Eigen::Matrix3Xd alpha = shaft(at + 0.3, at, Extra::CurlCounterClockwise);
     const Eigen::Matrix3Xd reverse = shaft(at + 0.3, at, Extra::CurlClockwise);
@@ -246,6 +251,50 @@ TEST(LoopDetector, ALoopsTypeChangesOnlyOnASteadyNewReading)
     // Resolving is not delayed by the type's dwell.
     const Eigen::Matrix3Xd straight = shaft(at + 0.3, at, Extra::None);
     EXPECT_EQ(detector.update(straight, shaftLength(straight)), LoopKind::None);
+}
+
+// The threshold and the hysteresis are the declared parameters, not
+// constants: at a 12 cm threshold 9 cm stored is no loop and 15 cm is; with
+// resolveFraction 0.5 the loop holds at 7 cm, where the default 60% of 12 cm
+// would resolve it, and resolves at 5 cm.
+TEST(LoopDetector, TheThresholdAndItsHysteresisAreTheDeclaredParameters)
+{
+    const double at = segmentMiddle(Segment::Descending);
+    const Eigen::Matrix3Xd s = shaft(at, 0.0, Extra::None);
+    const double length = shaftLength(s);
+    LoopParameters parameters;
+    parameters.threshold = 0.12;
+    parameters.resolveFraction = 0.5;
+    LoopDetector detector(anatomy().centreline, parameters);
+    detector.update(s, length);
+    const double offset = detector.signals().storedShaft;  // the resampled shaft's own, m
+    ASSERT_LT(std::abs(offset), 0.005);
+    EXPECT_EQ(detector.update(s, length + 0.09), LoopKind::None);
+    EXPECT_EQ(detector.update(s, length + 0.15), LoopKind::N);
+    EXPECT_EQ(detector.update(s, length + 0.07), LoopKind::N) << "above half the threshold";
+    EXPECT_EQ(detector.update(s, length + 0.05), LoopKind::None) << "below half the threshold";
+    parameters.resolveFraction = LoopParameters::resolveFractionSpec.defaultValue;
+    LoopDetector withDefaultFraction(anatomy().centreline, parameters);
+    EXPECT_EQ(withDefaultFraction.update(s, length + 0.15), LoopKind::N);
+    EXPECT_EQ(withDefaultFraction.update(s, length + 0.07), LoopKind::None) << "below 60% of the threshold";
+}
+
+TEST(LoopDetector, ParametersOutsideTheirRangeAreRefusedByName)
+{
+    LoopParameters parameters;
+    parameters.threshold = 0.5;
+    try {
+        LoopDetector detector(anatomy().centreline, parameters);
+        FAIL() << "a 0.5 m threshold was accepted";
+    } catch (const params::ParameterError& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("loops.threshold"), std::string::npos) << what;
+        EXPECT_NE(what.find("0.5"), std::string::npos) << what;
+        EXPECT_NE(what.find("0.3"), std::string::npos) << what;
+    }
+    parameters = {};
+    parameters.typeDwell = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_THROW(LoopDetector(anatomy().centreline, parameters), params::ParameterError);
 }
 
 TEST(LoopDetector, CoronalCrossingsOfAFigureEight)

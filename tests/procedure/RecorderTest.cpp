@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 namespace colonosim::procedure {
 namespace {
@@ -169,6 +170,18 @@ TEST(Recorder, RefusesASampleRateBelowOneHundredHertz)
     RecorderParameters p;
     p.sampleInterval = 0.05;
     EXPECT_THROW(Recorder{p}, params::ParameterError);
+}
+
+TEST(Recorder, RefusesACecumDepthOutsideItsRangeByName)
+{
+    RecorderParameters p;
+    p.cecumDepth = -0.01;
+    try {
+        Recorder recorder{p};
+        FAIL() << "a negative cecum depth was accepted";
+    } catch (const params::ParameterError& e) {
+        EXPECT_NE(std::string(e.what()).find("recorder.cecumDepth"), std::string::npos) << e.what();
+    }
 }
 
 }  // namespace

@@ -65,10 +65,18 @@ int runParams(std::span<char* const> args)
         &procedure::InputResolution::angleSpec};
     std::cout << "## Device input\n\n" << params::markdownTable("input", input) << '\n';
     const std::vector<const params::ParameterSpec*> recording{
-        &procedure::RecorderParameters::sampleIntervalSpec, &procedure::RecordingResolution::positionSpec,
-        &procedure::RecordingResolution::forceSpec,         &procedure::RecordingResolution::torqueSpec,
-        &procedure::RecordingResolution::strainSpec,        &procedure::RecordingResolution::discomfortSpec};
+        &procedure::RecorderParameters::sampleIntervalSpec,
+        &procedure::RecorderParameters::excessiveForceSpec,
+        &procedure::RecorderParameters::redOutSpec,
+        &procedure::RecorderParameters::cecumDepthSpec,
+        &procedure::RecordingResolution::positionSpec,
+        &procedure::RecordingResolution::forceSpec,
+        &procedure::RecordingResolution::torqueSpec,
+        &procedure::RecordingResolution::strainSpec,
+        &procedure::RecordingResolution::discomfortSpec};
     std::cout << "## Recording\n\n" << params::markdownTable("recording", recording) << '\n';
+    std::cout << "## Loop detection\n\n"
+              << params::markdownTable("loops", specsOf(procedure::LoopParameters::fields())) << '\n';
     std::cout << "## Contact bleeding marks\n\n"
               << params::markdownTable("bleeding", specsOf(procedure::BleedingParameters::fields())) << '\n';
     std::cout << "## Plain input devices (keyboard, gamepad)\n\n"
