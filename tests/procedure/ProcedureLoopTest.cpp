@@ -94,6 +94,35 @@ TEST(ProcedureLoop, BadDeviceInputIsRejectedAtTheBoundary)
     EXPECT_EQ(loop.trace().samples.size(), 600U) << "the raw input, bad samples included, is in the trace";
 }
 
+// The shaft is analysed for loops every loops.analysisInterval (a declared
+// parameter): the tip's place along the colon, which each analysis
+// measures, changes only on those steps, every 10 ms by default and every
+// 20 ms when the interval is set so.
+TEST(ProcedureLoop, TheShaftIsAnalysedForLoopsAtTheDeclaredInterval)
+{
+    for (const double interval : {0.01, 0.02}) {
+        ProcedureSettings settings;
+        settings.loops.analysisInterval = interval;
+        ProcedureLoop loop(defaultColon(), settings);
+        const long every = std::lround(interval / settings.stepping.loopStep);
+        InputSample input;
+        double last = loop.loops().signals().tipArcLength;
+        int changes = 0;
+        for (long s = 1; s <= 400; ++s) {
+            input.insertion = 0.2 * static_cast<double>(s) * settings.stepping.loopStep;  // 20 cm/s
+            loop.step(input);
+            const double now = loop.loops().signals().tipArcLength;
+            if (now != last) {
+                ++changes;
+                EXPECT_EQ(s % every, 0)
+                    << "analysed at step " << s << " with an interval of " << interval << " s";
+            }
+            last = now;
+        }
+        EXPECT_GT(changes, 400 / every / 2) << "the tip's place was measured as it went in";
+    }
+}
+
 // Hard case: full dial deflection while the tip is jammed against the rectal
 // wall and the operator keeps pushing at 10 cm/s and twisting. The tissue's
 // step check may reject a violent step (a wall node flung faster than
