@@ -57,6 +57,7 @@ ProcedureLoop::ProcedureLoop(const geometry::ColonAnatomy& anatomy, const Proced
       m_lesions(anatomy, settings.lesions, settings.viewing), m_bleeding(settings.bleeding),
       m_recorder(withColonLength(settings.recorder, anatomy.centreline.length()))
 {
+    settings.insufflator.validate();
     // Over one loop step a free wall node under a load held for the step
     // gives way by dt^2 / (2 m) per newton (its springs only hold it back:
     // 1.2-2.1 mm/N measured on the default colon against 2.4 mm/N).
@@ -183,10 +184,10 @@ const ProcedureOutputs& ProcedureLoop::step(const InputSample& input)
     m_scope.setShaftRotation(m_input.rotation);
     m_scope.setDials(m_input.dialUpDown, m_input.dialLeftRight);
     if (m_colon.insufflation != nullptr && (m_input.buttons & (kAir | kSuction)) != 0) {
-        const double rate =
-            (m_input.buttons & kAir) != 0 ? m_settings.insufflationRate : -m_settings.insufflationRate;
-        m_colon.insufflation->setPressure(
-            std::clamp(m_colon.insufflation->pressure() + rate * dt, 0.0, m_settings.maxInsufflation));
+        const double rate = (m_input.buttons & kAir) != 0 ? m_settings.insufflator.pressureRate
+                                                          : -m_settings.insufflator.pressureRate;
+        m_colon.insufflation->setPressure(std::clamp(m_colon.insufflation->pressure() + rate * dt, 0.0,
+                                                     m_settings.insufflator.maxPressure));
     }
 
     applyContact();  // contact is resolved inside the scope's chain iterations

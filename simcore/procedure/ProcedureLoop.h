@@ -36,6 +36,7 @@
 #include "simcore/procedure/ContactCoupling.h"
 #include "simcore/procedure/Discomfort.h"
 #include "simcore/procedure/InputTrace.h"
+#include "simcore/procedure/Insufflator.h"
 #include "simcore/procedure/LesionView.h"
 #include "simcore/procedure/LoopDetector.h"
 #include "simcore/procedure/Recorder.h"
@@ -67,8 +68,7 @@ struct ProcedureSettings {
     std::vector<WallSite> adhesions;
     static constexpr int kMaxAdhesions = 32;
     render::RenderParameters viewing;
-    double insufflationRate = 266.6;  ///< Pa/s while air (or, negative, suction) is pressed (2 mmHg/s)
-    double maxInsufflation = 8000.0;  ///< Pa the insufflator never exceeds (60 mmHg)
+    InsufflatorParameters insufflator;
 };
 
 /// What a haptic device and the camera need after each step.

@@ -94,6 +94,41 @@ TEST(ProcedureLoop, BadDeviceInputIsRejectedAtTheBoundary)
     EXPECT_EQ(loop.trace().samples.size(), 600U) << "the raw input, bad samples included, is in the trace";
 }
 
+// Air raises the luminal pressure at insufflator.pressureRate up to
+// insufflator.maxPressure and suction lowers it at the same rate; a ceiling
+// outside its declared range is refused by name.
+TEST(ProcedureLoop, AirAndSuctionMoveThePressureAtTheDeclaredRateUpToTheCeiling)
+{
+    ProcedureSettings settings;
+    settings.insufflator.pressureRate = 1000.0;  // Pa/s
+    settings.insufflator.maxPressure = settings.environment.insufflationPressure + 300.0;
+    ProcedureLoop loop(defaultColon(), settings);
+    const double start = loop.colon().insufflation->pressure();
+    InputSample input;
+    input.buttons = procedure::kAir;
+    for (int s = 0; s < 100; ++s) {
+        loop.step(input);
+    }
+    EXPECT_NEAR(loop.colon().insufflation->pressure(), start + 100.0, 1e-6) << "Pa after 0.1 s of air";
+    for (int s = 0; s < 400; ++s) {
+        loop.step(input);
+    }
+    EXPECT_DOUBLE_EQ(loop.colon().insufflation->pressure(), settings.insufflator.maxPressure);
+    input.buttons = procedure::kSuction;
+    for (int s = 0; s < 200; ++s) {
+        loop.step(input);
+    }
+    EXPECT_NEAR(loop.colon().insufflation->pressure(), settings.insufflator.maxPressure - 200.0, 1e-6);
+
+    settings.insufflator.maxPressure = 20000.0;
+    try {
+        ProcedureLoop refused(defaultColon(), settings);
+        FAIL() << "a 20 kPa ceiling was accepted";
+    } catch (const params::ParameterError& e) {
+        EXPECT_NE(std::string(e.what()).find("insufflator.maxPressure"), std::string::npos) << e.what();
+    }
+}
+
 // The shaft is analysed for loops every loops.analysisInterval (a declared
 // parameter): the tip's place along the colon, which each analysis
 // measures, changes only on those steps, every 10 ms by default and every

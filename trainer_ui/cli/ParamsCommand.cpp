@@ -12,6 +12,8 @@
 #include "simcore/physics/TissueSimulation.h"
 #include "simcore/procedure/BleedingMarks.h"
 #include "simcore/procedure/DeviceInput.h"
+#include "simcore/procedure/Insufflator.h"
+#include "simcore/procedure/LoopDetector.h"
 #include "simcore/procedure/Recorder.h"
 #include "simcore/render/RenderParameters.h"
 #include "simcore/scope/ScopeParameters.h"
@@ -75,6 +77,9 @@ int runParams(std::span<char* const> args)
         &procedure::RecordingResolution::strainSpec,
         &procedure::RecordingResolution::discomfortSpec};
     std::cout << "## Recording\n\n" << params::markdownTable("recording", recording) << '\n';
+    std::cout << "## Insufflator\n\n"
+              << params::markdownTable("insufflator", specsOf(procedure::InsufflatorParameters::fields()))
+              << '\n';
     std::cout << "## Loop detection\n\n"
               << params::markdownTable("loops", specsOf(procedure::LoopParameters::fields())) << '\n';
     std::cout << "## Contact bleeding marks\n\n"
