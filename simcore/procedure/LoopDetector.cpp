@@ -103,9 +103,11 @@ int LoopParameters::typeDwellAnalyses() const
 }
 
 LoopDetector::LoopDetector(const geometry::Centreline& colon, const LoopParameters& parameters)
-    : m_colon(colon), m_parameters((parameters.validate(), parameters)),
-      m_typeDwell(parameters.typeDwellAnalyses())
-{}
+    : m_colon(colon), m_parameters(parameters)
+{
+    m_parameters.validate();
+    m_typeDwell = m_parameters.typeDwellAnalyses();
+}
 
 double LoopDetector::locate(const Eigen::Vector3d& p) const
 {

@@ -168,7 +168,7 @@ private:
 
     const geometry::Centreline& m_colon;
     LoopParameters m_parameters;
-    int m_typeDwell;                ///< analyses
+    int m_typeDwell = 1;            ///< analyses (LoopParameters::typeDwellAnalyses())
     double m_bendingSection = 0.0;  ///< m
     LoopKind m_current = LoopKind::None;
     LoopKind m_pending = LoopKind::None;  ///< a type read instead of the current one

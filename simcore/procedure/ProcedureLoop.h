@@ -142,8 +142,8 @@ private:
     ContactCoupling m_coupling;
     std::vector<double> m_nodeArcs;  ///< each scope node's place along the colon (lumen station), m
     LoopDetector m_loops;
-    int m_loopAnalysisSteps =
-        1;  ///< loop steps between two analyses of the shaft (LoopParameters::analysisInterval)
+    /// Loop steps between two analyses of the shaft (LoopParameters::analysisInterval).
+    int m_loopAnalysisSteps = 1;
     DiscomfortModel m_discomfort;
     LesionView m_lesions;
     BleedingMarks m_bleeding;

@@ -1,5 +1,6 @@
 #include "simcore/procedure/Recorder.h"
 
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdio>
@@ -39,12 +40,29 @@ std::string lesionName(int index)
     return "lesion " + std::to_string(index + 1);
 }
 
+namespace {
+using R = RecorderParameters;
+constexpr std::array<params::Field<R>, 4> kRecorderFields{{
+    {&R::sampleIntervalSpec, &R::sampleInterval},
+    {&R::excessiveForceSpec, &R::excessiveForce},
+    {&R::redOutSpec, &R::redOutDistance},
+    {&R::cecumDepthSpec, &R::cecumDepth},
+}};
+}  // namespace
+
+std::span<const params::Field<RecorderParameters>> RecorderParameters::fields()
+{
+    return kRecorderFields;
+}
+
+void RecorderParameters::validate() const
+{
+    params::validateFields<RecorderParameters>("recorder", kRecorderFields, *this);
+}
+
 Recorder::Recorder(const RecorderParameters& parameters) : m_parameters(parameters)
 {
-    params::require("recorder", RecorderParameters::sampleIntervalSpec, parameters.sampleInterval);
-    params::require("recorder", RecorderParameters::excessiveForceSpec, parameters.excessiveForce);
-    params::require("recorder", RecorderParameters::redOutSpec, parameters.redOutDistance);
-    params::require("recorder", RecorderParameters::cecumDepthSpec, parameters.cecumDepth);
+    m_parameters.validate();
 }
 
 void Recorder::event(double time, EventKind kind, std::string detail)

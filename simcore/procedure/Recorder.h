@@ -27,6 +27,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -131,6 +132,11 @@ struct RecorderParameters {
     double redOutDistance = redOutSpec.defaultValue;
     double cecumDepth = cecumDepthSpec.defaultValue;
     double colonLength = 1.66;  ///< m, from the anatomy
+
+    /// The declared fields (colonLength comes from the anatomy, not a setting).
+    [[nodiscard]] static std::span<const params::Field<RecorderParameters>> fields();
+    /// Throws ParameterError naming the field, the value and the range.
+    void validate() const;
 };
 
 /// The steps the recorded sample values are rounded to, so that the stored

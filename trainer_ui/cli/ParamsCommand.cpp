@@ -66,15 +66,11 @@ int runParams(std::span<char* const> args)
         &procedure::InputSample::dialSpec, &procedure::InputResolution::insertionSpec,
         &procedure::InputResolution::angleSpec};
     std::cout << "## Device input\n\n" << params::markdownTable("input", input) << '\n';
+    std::cout << "## Recorder\n\n"
+              << params::markdownTable("recorder", specsOf(procedure::RecorderParameters::fields())) << '\n';
     const std::vector<const params::ParameterSpec*> recording{
-        &procedure::RecorderParameters::sampleIntervalSpec,
-        &procedure::RecorderParameters::excessiveForceSpec,
-        &procedure::RecorderParameters::redOutSpec,
-        &procedure::RecorderParameters::cecumDepthSpec,
-        &procedure::RecordingResolution::positionSpec,
-        &procedure::RecordingResolution::forceSpec,
-        &procedure::RecordingResolution::torqueSpec,
-        &procedure::RecordingResolution::strainSpec,
+        &procedure::RecordingResolution::positionSpec, &procedure::RecordingResolution::forceSpec,
+        &procedure::RecordingResolution::torqueSpec, &procedure::RecordingResolution::strainSpec,
         &procedure::RecordingResolution::discomfortSpec};
     std::cout << "## Recording\n\n" << params::markdownTable("recording", recording) << '\n';
     std::cout << "## Insufflator\n\n"
