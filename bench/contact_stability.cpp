@@ -1,11 +1,16 @@
-// Contact stability report: the scripted expert on several patients, for
-// several values of contact.loadRelaxation, and how often its tip moved
-// faster than 2 m/s (a step longer than 2 mm) or lay more than a scope
-// diameter into the wall, and the steps whose chain solve the scope's step
-// guard refused. The figures behind the parameter's default, and behind
-// scope.maxNodeStep's (--max-node-step 1 leaves the guard out).
+// Contact stability report: a scripted operator on several patients, for
+// several values of contact.loadRelaxation and of contact.couplingSweeps,
+// and how often its tip moved faster than 2 m/s (a step longer than 2 mm) or
+// lay more than a scope diameter into the wall, the steps whose chain solve
+// the scope's step guard refused, and what the contact solve cost: the
+// wall-clock time per loop step, the nodes in the solve, the share of the
+// steps whose last solve stopped at the sweep cap and the load change it
+// left (contact.sweepTolerance is 0.1 mN). The figures behind the
+// parameters' defaults, and behind scope.maxNodeStep's (--max-node-step 1
+// leaves the guard out).
 //
 //   contact_stability [--seconds S] [--seeds 0,1,2,3] [--relaxation 1,0.5,0.3] [--max-node-step M]
+//                     [--sweeps 30] [--operator expert|novice]
 //
 // Seed 0 is the default colon; any other seed is a generated patient.
 
@@ -16,6 +21,8 @@
 #include "simcore/procedure/ProcedureLoop.h"
 
 #include <algorithm>
+#include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <exception>
@@ -31,27 +38,39 @@ using namespace colonosim;
 constexpr double kFastStep = 2e-3;  ///< m of tip motion in one 1 ms step: faster than 2 m/s
 
 struct Outcome {
-    long fastSteps = 0;   ///< steps with the tip moving more than kFastStep
-    long outside = 0;     ///< steps with the tip more than a scope diameter into the wall
-    double deepest = 0;   ///< m
-    double furthest = 0;  ///< m along the colon
-    long guarded = 0;     ///< steps with a chain solve refused by the scope's step guard
+    long fastSteps = 0;         ///< steps with the tip moving more than kFastStep
+    long outside = 0;           ///< steps with the tip more than a scope diameter into the wall
+    double deepest = 0;         ///< m
+    double furthest = 0;        ///< m along the colon
+    long guarded = 0;           ///< steps with a chain solve refused by the scope's step guard
+    long steps = 0;             ///< loop steps run
+    double seconds = 0;         ///< wall-clock time of the loop steps, s
+    double nodes = 0;           ///< nodes in the contact solve, summed over the steps
+    long capped = 0;            ///< steps whose last contact solve stopped at the sweep cap
+    double cappedResidual = 0;  ///< the load change those solves left, summed, N
 };
 
-Outcome runExpert(std::uint64_t seed, double relaxation, double maxNodeStep, double seconds)
+Outcome runOperator(std::uint64_t seed, const procedure::OperatorStyle& style, double relaxation,
+                    double maxNodeStep, double sweeps, double seconds)
 {
     const bench::Patient patient = bench::patientFromSeed(seed);
     procedure::ProcedureSettings settings = patient.settings;
     settings.contact.loadRelaxation = relaxation;
+    settings.contact.couplingSweeps = sweeps;
     settings.scope.maxNodeStep = maxNodeStep;
     const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(patient.anatomy);
     procedure::ProcedureLoop loop(anatomy, settings);
-    procedure::ScriptedOperator expert(procedure::expertStyle());
+    procedure::ScriptedOperator hands(style);
     Outcome outcome;
     Eigen::Vector3d previous = loop.scope().tipPose().position;
     const auto steps = static_cast<long>(seconds / settings.stepping.loopStep);
-    for (long s = 0; s < steps && !expert.finished(); ++s) {
-        loop.step(expert.next(loop));
+    const int cap = static_cast<int>(std::lround(sweeps));
+    for (long s = 0; s < steps && !hands.finished(); ++s) {
+        const procedure::InputSample input = hands.next(loop);
+        const auto start = std::chrono::steady_clock::now();
+        loop.step(input);
+        outcome.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        ++outcome.steps;
         const Eigen::Vector3d tip = loop.scope().tipPose().position;
         const double depth = loop.lumen().contacts().back().depth;
         outcome.fastSteps += (tip - previous).norm() > kFastStep ? 1 : 0;
@@ -59,6 +78,12 @@ Outcome runExpert(std::uint64_t seed, double relaxation, double maxNodeStep, dou
         outcome.deepest = std::max(outcome.deepest, depth);
         outcome.furthest = std::max(outcome.furthest, loop.lastFrame().tipArcLength);
         outcome.guarded += loop.scope().guardRetries() > 0 ? 1 : 0;
+        outcome.nodes += static_cast<double>(loop.coupling().activeNodes().size());
+        if (loop.coupling().sweeps() >= cap &&
+            loop.coupling().residual() >= settings.contact.sweepTolerance) {
+            ++outcome.capped;
+            outcome.cappedResidual += loop.coupling().residual();
+        }
         previous = tip;
     }
     return outcome;
@@ -72,6 +97,8 @@ int main(int argc, char** argv)
     std::vector<std::uint64_t> seeds{0, 1, 2, 3};
     std::vector<double> relaxations{1.0, 0.5, 0.3};
     double maxNodeStep = scope::ScopeParameters{}.maxNodeStep;
+    std::vector<double> sweepCaps{contact::ContactParameters{}.couplingSweeps};
+    bool novice = false;
     try {
         bench::forEachOption(argc, argv, [&](const std::string& flag, const std::string& value) {
             if (flag == "--seconds") {
@@ -83,9 +110,18 @@ int main(int argc, char** argv)
             } else if (flag == "--max-node-step") {
                 const auto& spec = scope::ScopeParameters::maxNodeStepSpec;
                 maxNodeStep = bench::parseList(flag, value, spec.minValue, spec.maxValue).front();
+            } else if (flag == "--sweeps") {
+                const auto& spec = contact::ContactParameters::sweepsSpec;
+                sweepCaps = bench::parseList(flag, value, spec.minValue, spec.maxValue);
+            } else if (flag == "--operator") {
+                if (value != "expert" && value != "novice") {
+                    throw std::invalid_argument("--operator = '" + value + "' is not one of expert, novice");
+                }
+                novice = value == "novice";
             } else {
-                throw std::invalid_argument("unknown option '" + flag +
-                                            "' (allowed: --seconds, --seeds, --relaxation, --max-node-step)");
+                throw std::invalid_argument(
+                    "unknown option '" + flag +
+                    "' (allowed: --seconds, --seeds, --relaxation, --max-node-step, --sweeps, --operator)");
             }
         });
     } catch (const std::exception& error) {
@@ -93,26 +129,36 @@ int main(int argc, char** argv)
         return 2;
     }
     std::printf(
-        "expert, %.1f s per run, scope.maxNodeStep %.4g m; fast: tip steps longer than 2 mm; outside: "
+        "%s, %.1f s per run, scope.maxNodeStep %.4g m; fast: tip steps longer than 2 mm; outside: "
         "steps with the tip more than a scope diameter into the wall; guarded: steps with a chain solve "
-        "refused by the step guard\n",
-        seconds, maxNodeStep);
-    std::printf("%-10s %-6s %10s %10s %12s %12s %9s\n", "relaxation", "seed", "fast", "outside", "deepest_mm",
-                "furthest_m", "guarded");
-    for (const double relaxation : relaxations) {
-        Outcome total;
-        for (const std::uint64_t seed : seeds) {
-            const Outcome o = runExpert(seed, relaxation, maxNodeStep, seconds);
-            std::printf("%-10.2f %-6llu %10ld %10ld %12.1f %12.3f %9ld\n", relaxation,
-                        static_cast<unsigned long long>(seed), o.fastSteps, o.outside, o.deepest * 1e3,
-                        o.furthest, o.guarded);
-            std::fflush(stdout);
-            total.fastSteps += o.fastSteps;
-            total.outside += o.outside;
-            total.deepest = std::max(total.deepest, o.deepest);
+        "refused by the step guard; us/step: wall-clock time of a loop step; nodes: mean nodes in the "
+        "contact solve; capped: steps whose last solve stopped at the sweep cap with loads still changing, "
+        "and the mean change left (mN)\n",
+        novice ? "novice" : "expert", seconds, maxNodeStep);
+    std::printf("%-10s %-6s %-6s %10s %10s %12s %12s %9s %9s %7s %8s %10s\n", "relaxation", "sweeps", "seed",
+                "fast", "outside", "deepest_mm", "furthest_m", "guarded", "us/step", "nodes", "capped",
+                "left_mN");
+    const procedure::OperatorStyle style = novice ? procedure::noviceStyle() : procedure::expertStyle();
+    for (const double sweeps : sweepCaps) {
+        for (const double relaxation : relaxations) {
+            Outcome total;
+            for (const std::uint64_t seed : seeds) {
+                const Outcome o = runOperator(seed, style, relaxation, maxNodeStep, sweeps, seconds);
+                const double steps = static_cast<double>(std::max(o.steps, 1L));
+                std::printf(
+                    "%-10.2f %-6.0f %-6llu %10ld %10ld %12.1f %12.3f %9ld %9.0f %7.1f %7.1f%% %10.3f\n",
+                    relaxation, sweeps, static_cast<unsigned long long>(seed), o.fastSteps, o.outside,
+                    o.deepest * 1e3, o.furthest, o.guarded, o.seconds / steps * 1e6, o.nodes / steps,
+                    100.0 * static_cast<double>(o.capped) / steps,
+                    o.capped > 0 ? o.cappedResidual / static_cast<double>(o.capped) * 1e3 : 0.0);
+                std::fflush(stdout);
+                total.fastSteps += o.fastSteps;
+                total.outside += o.outside;
+                total.deepest = std::max(total.deepest, o.deepest);
+            }
+            std::printf("%-10.2f %-6.0f %-6s %10ld %10ld %12.1f\n", relaxation, sweeps, "all",
+                        total.fastSteps, total.outside, total.deepest * 1e3);
         }
-        std::printf("%-10.2f %-6s %10ld %10ld %12.1f\n", relaxation, "all", total.fastSteps, total.outside,
-                    total.deepest * 1e3);
     }
     return 0;
 }

@@ -6,12 +6,14 @@ namespace colonosim::contact {
 
 namespace {
 using P = ContactParameters;
-constexpr std::array<Field<P>, 7> kContactFields{{
+constexpr std::array<Field<P>, 9> kContactFields{{
     {&P::stiffnessSpec, &P::contactStiffness},
     {&P::dampingSpec, &P::contactDamping},
     {&P::frictionSpec, &P::frictionCoefficient},
     {&P::stickVelocitySpec, &P::stickVelocity},
     {&P::passesSpec, &P::couplingPasses},
+    {&P::sweepsSpec, &P::couplingSweeps},
+    {&P::sweepToleranceSpec, &P::sweepTolerance},
     {&P::relaxationSpec, &P::loadRelaxation},
     {&P::stepLimitSpec, &P::stepLimit},
 }};

@@ -35,9 +35,7 @@ void shiftToTip(std::vector<T>& v, int numNodes, int added, const T& empty)
     v.resize(static_cast<size_t>(numNodes));
 }
 
-constexpr double kActiveGap = 5e-3;       ///< m: nodes this close to the wall join the update
-constexpr double kSweepTolerance = 1e-4;  ///< N: the sweeps stop when no lambda changes more
-constexpr int kMaxSweeps = 30;
+constexpr double kActiveGap = 5e-3;          ///< m: nodes this close to the wall join the update
 const double kCarryCosine = std::sqrt(0.5);  ///< a load follows a normal that turned less than 45 degrees
 }  // namespace
 
@@ -121,7 +119,8 @@ void ContactCoupling::solve(const std::vector<contact::LumenNodeContact>& contac
     // The start state (loads carried onto the present normals) is update()'s.
     const auto m = m_active.size();
     m_sweeps = 0;
-    for (int sweep = 0; sweep < kMaxSweeps && m > 0; ++sweep) {
+    m_residual = 0.0;
+    for (int sweep = 0; sweep < m_limits.maxSweeps && m > 0; ++sweep) {
         ++m_sweeps;
         double largest = 0.0;
         for (size_t a = 0; a < m; ++a) {
@@ -165,7 +164,8 @@ void ContactCoupling::solve(const std::vector<contact::LumenNodeContact>& contac
             m_normal[a] = n;
             m_force[a] = lambda * n;
         }
-        if (largest < kSweepTolerance) {
+        m_residual = largest;
+        if (largest < m_limits.tolerance) {
             break;
         }
     }

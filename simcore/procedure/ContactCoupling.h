@@ -25,7 +25,8 @@
 /// a projected Gauss-Seidel sweep updates each lambda_a by the Newton step
 ///     lambda_a += (k_c depth_a - lambda_a) / (1 + k_c G_aa),  lambda_a >= 0,
 /// G_aa = n_a^T C_aa n_a (plus the wall's part below), until the largest
-/// change is below 1e-4 N (or 30 sweeps). The normal is re-measured in every
+/// change is below contact.sweepTolerance (or contact.couplingSweeps sweeps,
+/// 0.1 mN and 30 by default). The normal is re-measured in every
 /// sweep: on a curved wall it turns as the node moves (by dx / lever, with a
 /// gain lambda G_aa / lever that easily exceeds 1 on a compliant tip), and a
 /// normal frozen for the step makes the tip swing from side to side. The
@@ -68,13 +69,22 @@
 
 namespace colonosim::procedure {
 
+/// When a contact solve's Gauss-Seidel sweeps stop (contact.couplingSweeps
+/// and contact.sweepTolerance).
+struct SweepLimits {
+    int maxSweeps = 30;
+    double tolerance = 1e-4;  ///< N: the largest change of a normal load in a sweep that stops them
+};
+
 class ContactCoupling {
 public:
     /// `contactStiffness` k_c, N/m; `maxStep` the trust region, m per loop
     /// step; `loopStep` dt, s; `relaxation` omega in (0, 1], the fraction of
     /// the solved load change that each solve applies.
-    ContactCoupling(double contactStiffness, double maxStep, double loopStep, double relaxation)
-        : m_stiffness(contactStiffness), m_maxStep(maxStep), m_loopStep(loopStep), m_relaxation(relaxation)
+    ContactCoupling(double contactStiffness, double maxStep, double loopStep, double relaxation,
+                    SweepLimits sweeps = {})
+        : m_stiffness(contactStiffness), m_maxStep(maxStep), m_loopStep(loopStep), m_relaxation(relaxation),
+          m_limits(sweeps)
     {}
 
     /// Updates the node loads from `contacts` (one per inserted node, measured
@@ -107,6 +117,10 @@ public:
     [[nodiscard]] Eigen::MatrixXd delassus() const;
     /// Gauss-Seidel sweeps of the last update.
     [[nodiscard]] int sweeps() const { return m_sweeps; }
+    /// The largest change of a normal load in the last solve's last sweep, N:
+    /// below the tolerance when the sweeps converged, what was left when
+    /// they stopped at the cap.
+    [[nodiscard]] double residual() const { return m_residual; }
 
 private:
     void align(int numNodes, int addedAtBase);
@@ -121,7 +135,9 @@ private:
     double m_maxStep;
     double m_loopStep;
     double m_relaxation;
+    SweepLimits m_limits;
     int m_sweeps = 0;
+    double m_residual = 0.0;
     std::vector<Eigen::Vector3d> m_load;  ///< normal load per node (lambda n), N
     std::vector<int> m_active;            ///< nodes in the update
     std::vector<double> m_stepDepth;      ///< depth of each node at the last step's start, m (NaN: none)

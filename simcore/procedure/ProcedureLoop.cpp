@@ -50,8 +50,10 @@ ProcedureLoop::ProcedureLoop(const geometry::ColonAnatomy& anatomy, const Proced
       m_colon(physics::buildColonBody(anatomy, settings.tissue, settings.environment, settings.calibration,
                                       colonOptions(anatomy, settings))),
       m_scope(settings.scope), m_contact(anatomy, settings.contact),
-      m_coupling(settings.contact.contactStiffness, settings.contact.stepLimit, settings.stepping.loopStep,
-                 settings.contact.loadRelaxation),
+      m_coupling(
+          settings.contact.contactStiffness, settings.contact.stepLimit, settings.stepping.loopStep,
+          settings.contact.loadRelaxation,
+          {static_cast<int>(std::lround(settings.contact.couplingSweeps)), settings.contact.sweepTolerance}),
       m_loops(anatomy.centreline, settings.loops),
       m_discomfort(withFailureStrain(settings.discomfort, settings.tissue.mesenteryMaxStrain)),
       m_lesions(anatomy, settings.lesions, settings.viewing), m_bleeding(settings.bleeding),

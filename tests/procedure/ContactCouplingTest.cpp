@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <map>
 
@@ -394,6 +395,41 @@ TEST(ContactCoupling, TheFrictionOfManyContactsTogetherCannotReverseTheirSlip)
         ownStick = std::max(ownStick, back);
     }
     EXPECT_GT(ownStick, 1.0);
+}
+
+// The sweeps stop at contact.couplingSweeps, or earlier once no load changes
+// by more than contact.sweepTolerance in a sweep; residual() is that largest
+// change of the last sweep. Five contacts along one shaft, deeper towards the
+// tip, couple through the shaft's compliance (each node's load moves the
+// others): their loads change over eight sweeps before they settle, to the
+// last bit.
+TEST(ContactCoupling, TheSweepsStopAtTheirCapOrOnceTheLoadsSettle)
+{
+    const auto solved = [](colonosim::procedure::SweepLimits limits) {
+        Colonoscope scope = straightScope(0.3);
+        const int tip = scope.numInsertedNodes() - 1;
+        std::map<int, double> depths;
+        const std::array<double, 5> depth{15e-3, 10e-3, 6e-3, 3e-3, 1e-3};  // m, tip first
+        for (int k = 0; k < 5; ++k) {
+            depths[tip - 2 * k] = depth[static_cast<size_t>(k)];
+        }
+        const auto contacts = contactsOn(scope, depths);
+        ContactCoupling coupling(kStiffness, 1.0, kLoopStep, 1.0, limits);
+        coupling.update(contacts, scope.rod(), 0, kRigidWall);
+        coupling.solveAndApply(scope.rod(), law());
+        return std::pair{coupling.sweeps(), coupling.residual()};
+    };
+    const auto [capped, left] = solved({2, 1e-12});
+    EXPECT_EQ(capped, 2);
+    EXPECT_GT(left, 1e-3) << "two sweeps leave the coupled loads changing";
+    const auto [settled, settledLeft] = solved({500, 1e-6});
+    EXPECT_GT(settled, 2);
+    EXPECT_LT(settled, 500);
+    EXPECT_LT(settledLeft, 1e-6);
+    const auto [looser, looserLeft] = solved({500, 0.02});
+    EXPECT_LT(looser, settled) << "a looser tolerance stops sooner";
+    EXPECT_LT(looserLeft, 0.02);
+    EXPECT_GE(looserLeft, 1e-6);
 }
 
 }  // namespace

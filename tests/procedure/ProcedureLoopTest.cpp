@@ -399,4 +399,23 @@ TEST(ProcedureLoop, TheContactIsSolvedAtMostCouplingPassesTimesPerStep)
     }
 }
 
+// The contact solve's sweep limits are declared parameters: values outside
+// their ranges are refused by name before the loop starts.
+TEST(ProcedureLoop, SweepLimitsOutsideTheirRangeAreRefusedByName)
+{
+    ProcedureSettings sweeps;
+    sweeps.contact.couplingSweeps = 0.0;
+    ProcedureSettings tolerance;
+    tolerance.contact.sweepTolerance = 1.0;
+    for (const auto& [settings, name] :
+         {std::pair{sweeps, "contact.couplingSweeps"}, std::pair{tolerance, "contact.sweepTolerance"}}) {
+        try {
+            ProcedureLoop loop(defaultColon(), settings);
+            ADD_FAILURE() << name << " accepted";
+        } catch (const params::ParameterError& e) {
+            EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
+        }
+    }
+}
+
 }  // namespace
