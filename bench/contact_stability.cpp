@@ -10,7 +10,7 @@
 // leaves the guard out).
 //
 //   contact_stability [--seconds S] [--seeds 0,1,2,3] [--relaxation 1,0.5,0.3] [--max-node-step M]
-//                     [--sweeps 30] [--operator expert|novice]
+//                     [--sweeps 30] [--operator expert|novice] [--prefix-sweeps 0|1]
 //
 // Seed 0 is the default colon; any other seed is a generated patient.
 
@@ -51,12 +51,13 @@ struct Outcome {
 };
 
 Outcome runOperator(std::uint64_t seed, const procedure::OperatorStyle& style, double relaxation,
-                    double maxNodeStep, double sweeps, double seconds)
+                    double maxNodeStep, double sweeps, double prefixSweeps, double seconds)
 {
     const bench::Patient patient = bench::patientFromSeed(seed);
     procedure::ProcedureSettings settings = patient.settings;
     settings.contact.loadRelaxation = relaxation;
     settings.contact.couplingSweeps = sweeps;
+    settings.contact.prefixSweeps = prefixSweeps;
     settings.scope.maxNodeStep = maxNodeStep;
     const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(patient.anatomy);
     procedure::ProcedureLoop loop(anatomy, settings);
@@ -99,6 +100,7 @@ int main(int argc, char** argv)
     double maxNodeStep = scope::ScopeParameters{}.maxNodeStep;
     std::vector<double> sweepCaps{contact::ContactParameters{}.couplingSweeps};
     bool novice = false;
+    double prefixSweeps = contact::ContactParameters{}.prefixSweeps;
     try {
         bench::forEachOption(argc, argv, [&](const std::string& flag, const std::string& value) {
             if (flag == "--seconds") {
@@ -113,6 +115,8 @@ int main(int argc, char** argv)
             } else if (flag == "--sweeps") {
                 const auto& spec = contact::ContactParameters::sweepsSpec;
                 sweepCaps = bench::parseList(flag, value, spec.minValue, spec.maxValue);
+            } else if (flag == "--prefix-sweeps") {
+                prefixSweeps = bench::parseList(flag, value, 0.0, 1.0).front();
             } else if (flag == "--operator") {
                 if (value != "expert" && value != "novice") {
                     throw std::invalid_argument("--operator = '" + value + "' is not one of expert, novice");
@@ -121,7 +125,8 @@ int main(int argc, char** argv)
             } else {
                 throw std::invalid_argument(
                     "unknown option '" + flag +
-                    "' (allowed: --seconds, --seeds, --relaxation, --max-node-step, --sweeps, --operator)");
+                    "' (allowed: --seconds, --seeds, --relaxation, --max-node-step, --sweeps, --operator, "
+                    "--prefix-sweeps)");
             }
         });
     } catch (const std::exception& error) {
@@ -129,12 +134,13 @@ int main(int argc, char** argv)
         return 2;
     }
     std::printf(
-        "%s, %.1f s per run, scope.maxNodeStep %.4g m; fast: tip steps longer than 2 mm; outside: "
+        "%s, %.1f s per run, scope.maxNodeStep %.4g m, contact.prefixSweeps %.0f; fast: tip steps longer "
+        "than 2 mm; outside: "
         "steps with the tip more than a scope diameter into the wall; guarded: steps with a chain solve "
         "refused by the step guard; us/step: wall-clock time of a loop step; nodes: mean nodes in the "
         "contact solve; capped: steps whose last solve stopped at the sweep cap with loads still changing, "
         "and the mean change left (mN)\n",
-        novice ? "novice" : "expert", seconds, maxNodeStep);
+        novice ? "novice" : "expert", seconds, maxNodeStep, prefixSweeps);
     std::printf("%-10s %-6s %-6s %10s %10s %12s %12s %9s %9s %7s %8s %10s\n", "relaxation", "sweeps", "seed",
                 "fast", "outside", "deepest_mm", "furthest_m", "guarded", "us/step", "nodes", "capped",
                 "left_mN");
@@ -143,7 +149,8 @@ int main(int argc, char** argv)
         for (const double relaxation : relaxations) {
             Outcome total;
             for (const std::uint64_t seed : seeds) {
-                const Outcome o = runOperator(seed, style, relaxation, maxNodeStep, sweeps, seconds);
+                const Outcome o =
+                    runOperator(seed, style, relaxation, maxNodeStep, sweeps, prefixSweeps, seconds);
                 const double steps = static_cast<double>(std::max(o.steps, 1L));
                 std::printf(
                     "%-10.2f %-6.0f %-6llu %10ld %10ld %12.1f %12.3f %9ld %9.0f %7.1f %7.1f%% %10.3f\n",

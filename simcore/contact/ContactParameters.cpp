@@ -6,7 +6,7 @@ namespace colonosim::contact {
 
 namespace {
 using P = ContactParameters;
-constexpr std::array<Field<P>, 9> kContactFields{{
+constexpr std::array<Field<P>, 10> kContactFields{{
     {&P::stiffnessSpec, &P::contactStiffness},
     {&P::dampingSpec, &P::contactDamping},
     {&P::frictionSpec, &P::frictionCoefficient},
@@ -14,6 +14,7 @@ constexpr std::array<Field<P>, 9> kContactFields{{
     {&P::passesSpec, &P::couplingPasses},
     {&P::sweepsSpec, &P::couplingSweeps},
     {&P::sweepToleranceSpec, &P::sweepTolerance},
+    {&P::prefixSweepsSpec, &P::prefixSweeps},
     {&P::relaxationSpec, &P::loadRelaxation},
     {&P::stepLimitSpec, &P::stepLimit},
 }};

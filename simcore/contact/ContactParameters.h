@@ -85,6 +85,18 @@ struct ContactParameters {
         "model choice: 0.1 mN, a hundredth of the 1 mN by which contact.couplingPasses judges the loads "
         "settled"};
 
+    static constexpr ParameterSpec prefixSweepsSpec{
+        "prefixSweeps",
+        "1",
+        0.0,
+        0.0,
+        1.0,
+        "1: each contact-solve sweep sums the load changes' effect on a node through the rod's prefix sums, "
+        "O(m) a sweep over m nodes in contact; 0: through the dense compliance, O(m^2) (the same sweeps, "
+        "rounded differently; procedure/ContactCoupling.h)",
+        "model choice: 0 keeps the runs the README measured bit for bit; 1 is for measuring what the "
+        "solve's cost does past the sigmoid (build/bench/contact_stability --prefix-sweeps)"};
+
     static constexpr ParameterSpec relaxationSpec{
         "loadRelaxation",
         "1",
@@ -115,6 +127,7 @@ struct ContactParameters {
     double couplingPasses = passesSpec.defaultValue;
     double couplingSweeps = sweepsSpec.defaultValue;
     double sweepTolerance = sweepToleranceSpec.defaultValue;
+    double prefixSweeps = prefixSweepsSpec.defaultValue;
     double loadRelaxation = relaxationSpec.defaultValue;
     double stepLimit = stepLimitSpec.defaultValue;
 

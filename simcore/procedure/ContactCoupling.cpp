@@ -82,6 +82,21 @@ void ContactCoupling::buildCompliance(const scope::DiscreteRod& rod)
             m_block[b * m + a] = c.transpose();
         }
     }
+    if (!m_limits.prefixSums) {
+        return;
+    }
+    for (auto* v : {&m_skew, &m_sumA, &m_sumB, &m_sumC, &m_toR1, &m_toR2}) {
+        v->resize(m);
+    }
+    for (size_t a = 0; a < m; ++a) {
+        const auto node = static_cast<size_t>(m_active[a]);
+        m_skew[a] = skew(rod.position[node]);
+        m_sumA[a] = m_prefixA[node];
+        m_sumB[a] = m_prefixB[node];
+        m_sumC[a] = m_prefixC[node];
+        m_toR1[a] = m_sumA[a] * m_skew[a] - m_sumB[a];
+        m_toR2[a] = m_sumC[a] - m_sumB[a].transpose() * m_skew[a];
+    }
 }
 
 void ContactCoupling::addWallCompliance(const std::vector<contact::LumenNodeContact>& contacts,
@@ -118,18 +133,50 @@ void ContactCoupling::solve(const std::vector<contact::LumenNodeContact>& contac
 {
     // The start state (loads carried onto the present normals) is update()'s.
     const auto m = m_active.size();
+    const bool prefix = m_limits.prefixSums;
+    if (prefix) {
+        m_wallShared.resize(m);
+        for (size_t a = 0; a < m; ++a) {
+            m_wallShared[a].clear();
+            for (size_t b = 0; b < m; ++b) {
+                if (m_wall[a * m + b] != 0.0) {
+                    m_wallShared[a].push_back(b);
+                }
+            }
+        }
+    }
     m_sweeps = 0;
     m_residual = 0.0;
     for (int sweep = 0; sweep < m_limits.maxSweeps && m > 0; ++sweep) {
         ++m_sweeps;
         double largest = 0.0;
+        // The prefix sweeps' sums (SweepLimits): every node on the tip side.
+        Eigen::Vector3d s0 = Eigen::Vector3d::Zero();
+        Eigen::Vector3d s1 = Eigen::Vector3d::Zero();
+        Eigen::Vector3d r1 = Eigen::Vector3d::Zero();
+        Eigen::Vector3d r2 = Eigen::Vector3d::Zero();
+        if (prefix) {
+            for (size_t b = 0; b < m; ++b) {
+                const Eigen::Vector3d change = m_force[b] - m_startForce[b];
+                s0 += change;
+                s1 += m_skew[b] * change;
+            }
+        }
         for (size_t a = 0; a < m; ++a) {
             // Predicted motion of node a relative to its wall under the
             // load changes so far (the current shapes carry the old loads).
             Eigen::Vector3d moved = Eigen::Vector3d::Zero();
-            for (size_t b = 0; b < m; ++b) {
-                const Eigen::Vector3d change = m_force[b] - m_startForce[b];
-                moved += m_block[a * m + b] * change + m_wall[a * m + b] * change;
+            if (prefix) {
+                moved = m_skew[a].transpose() * (m_sumA[a] * s1 - m_sumB[a] * s0 + r1) + m_sumC[a] * s0 -
+                        m_sumB[a].transpose() * s1 + r2;
+                for (const size_t b : m_wallShared[a]) {
+                    moved += m_wall[a * m + b] * (m_force[b] - m_startForce[b]);
+                }
+            } else {
+                for (size_t b = 0; b < m; ++b) {
+                    const Eigen::Vector3d change = m_force[b] - m_startForce[b];
+                    moved += m_block[a * m + b] * change + m_wall[a * m + b] * change;
+                }
             }
             const contact::LumenNodeContact& c = contacts[static_cast<size_t>(m_active[a])];
             Eigen::Vector3d n;
@@ -160,6 +207,16 @@ void ContactCoupling::solve(const std::vector<contact::LumenNodeContact>& contac
                 (m_maxStep + m_growth[static_cast<size_t>(m_active[a])]) / std::max(reach, 1e-12);
             lambda = std::clamp(lambda, std::max(0.0, m_startLambda[a] - limit), m_startLambda[a] + raise);
             largest = std::max(largest, std::abs(lambda - m_lambda[a]));
+            if (prefix) {
+                // Node a leaves the tip side's sums with its old change and
+                // joins the base side's with its new one.
+                const Eigen::Vector3d before = m_force[a] - m_startForce[a];
+                const Eigen::Vector3d after = lambda * n - m_startForce[a];
+                s0 -= before;
+                s1 -= m_skew[a] * before;
+                r1 += m_toR1[a] * after;
+                r2 += m_toR2[a] * after;
+            }
             m_lambda[a] = lambda;
             m_normal[a] = n;
             m_force[a] = lambda * n;

@@ -70,10 +70,22 @@
 namespace colonosim::procedure {
 
 /// When a contact solve's Gauss-Seidel sweeps stop (contact.couplingSweeps
-/// and contact.sweepTolerance).
+/// and contact.sweepTolerance), and how they sum the load changes' effect
+/// (contact.prefixSweeps).
 struct SweepLimits {
     int maxSweeps = 30;
     double tolerance = 1e-4;  ///< N: the largest change of a normal load in a sweep that stops them
+    /// false: node a's predicted motion is sum_b C_ab df_b over the dense
+    /// blocks, O(m^2) a sweep. true: the same sum through the rod's prefix
+    /// sums, O(m) a sweep. With b >= a the blocks use the prefix sums up to
+    /// a, with b < a those up to b, so
+    ///     sum_b C_ab df_b = X_a^T (A_a S1 - B_a S0 + R1) + C_a S0 - B_a^T S1 + R2,
+    /// S0 = sum_{b>=a} df_b, S1 = sum_{b>=a} X_b df_b (tip side),
+    /// R1 = sum_{b<a} (A_b X_b - B_b) df_b, R2 = sum_{b<a} (C_b - B_b^T X_b) df_b
+    /// (base side): a sweep from base to tip moves each node from the tip
+    /// side's sums to the base side's as it updates it. Same sweeps, other
+    /// rounding.
+    bool prefixSums = false;
 };
 
 class ContactCoupling {
@@ -145,7 +157,12 @@ private:
     // Working storage over the active nodes; it grows to the largest set
     // seen and is then reused, so a warm loop does not allocate.
     std::vector<Eigen::Matrix3d> m_block;  ///< C_ab, row-major over (a, b), m/N
-    std::vector<double> m_wall;            ///< wall compliance shared by (a, b), m/N
+    // Per active node a, for the prefix sweeps (SweepLimits::prefixSums):
+    // X_a = [x_a]x, the prefix sums A_a, B_a, C_a up to its joint, and the
+    // two matrices that move it to the base side's sums.
+    std::vector<Eigen::Matrix3d> m_skew, m_sumA, m_sumB, m_sumC, m_toR1, m_toR2;
+    std::vector<std::vector<size_t>> m_wallShared;  ///< per a: the b whose wall compliance with a is not 0
+    std::vector<double> m_wall;                     ///< wall compliance shared by (a, b), m/N
     std::vector<Eigen::Vector3d> m_force, m_startForce, m_normal;
     std::vector<double> m_lambda, m_startLambda;
     std::vector<double> m_slipCompliance;  ///< R_a, m/N (measureSlipCompliance())
