@@ -116,7 +116,8 @@ int main(int argc, char** argv)
                 const auto& spec = contact::ContactParameters::sweepsSpec;
                 sweepCaps = bench::parseList(flag, value, spec.minValue, spec.maxValue);
             } else if (flag == "--prefix-sweeps") {
-                prefixSweeps = bench::parseList(flag, value, 0.0, 1.0).front();
+                const auto& spec = contact::ContactParameters::prefixSweepsSpec;
+                prefixSweeps = bench::parseList(flag, value, spec.minValue, spec.maxValue).front();
             } else if (flag == "--operator") {
                 if (value != "expert" && value != "novice") {
                     throw std::invalid_argument("--operator = '" + value + "' is not one of expert, novice");

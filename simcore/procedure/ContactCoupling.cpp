@@ -85,17 +85,14 @@ void ContactCoupling::buildCompliance(const scope::DiscreteRod& rod)
     if (!m_limits.prefixSums) {
         return;
     }
-    for (auto* v : {&m_skew, &m_sumA, &m_sumB, &m_sumC, &m_toR1, &m_toR2}) {
+    for (auto* v : {&m_skew, &m_toR1, &m_toR2}) {
         v->resize(m);
     }
     for (size_t a = 0; a < m; ++a) {
         const auto node = static_cast<size_t>(m_active[a]);
         m_skew[a] = skew(rod.position[node]);
-        m_sumA[a] = m_prefixA[node];
-        m_sumB[a] = m_prefixB[node];
-        m_sumC[a] = m_prefixC[node];
-        m_toR1[a] = m_sumA[a] * m_skew[a] - m_sumB[a];
-        m_toR2[a] = m_sumC[a] - m_sumB[a].transpose() * m_skew[a];
+        m_toR1[a] = m_prefixA[node] * m_skew[a] - m_prefixB[node];
+        m_toR2[a] = m_prefixC[node] - m_prefixB[node].transpose() * m_skew[a];
     }
 }
 
@@ -107,6 +104,7 @@ void ContactCoupling::addWallCompliance(const std::vector<contact::LumenNodeCont
     // along the lumen: only those within a ring of each other can share nodes.
     const auto m = m_active.size();
     m_wall.assign(m * m, 0.0);
+    m_wallSpan.assign(m, {m, 0});
     for (size_t a = 0; a < m; ++a) {
         const contact::LumenNodeContact& ca = contacts[static_cast<size_t>(m_active[a])];
         for (size_t b = a; b < m; ++b) {
@@ -124,6 +122,12 @@ void ContactCoupling::addWallCompliance(const std::vector<contact::LumenNodeCont
             }
             m_wall[a * m + b] = shared;
             m_wall[b * m + a] = shared;
+            if (shared != 0.0) {
+                for (const auto& [row, column] : {std::pair{a, b}, std::pair{b, a}}) {
+                    m_wallSpan[row].first = std::min(m_wallSpan[row].first, column);
+                    m_wallSpan[row].second = std::max(m_wallSpan[row].second, column + 1);
+                }
+            }
         }
     }
 }
@@ -134,17 +138,6 @@ void ContactCoupling::solve(const std::vector<contact::LumenNodeContact>& contac
     // The start state (loads carried onto the present normals) is update()'s.
     const auto m = m_active.size();
     const bool prefix = m_limits.prefixSums;
-    if (prefix) {
-        m_wallShared.resize(m);
-        for (size_t a = 0; a < m; ++a) {
-            m_wallShared[a].clear();
-            for (size_t b = 0; b < m; ++b) {
-                if (m_wall[a * m + b] != 0.0) {
-                    m_wallShared[a].push_back(b);
-                }
-            }
-        }
-    }
     m_sweeps = 0;
     m_residual = 0.0;
     for (int sweep = 0; sweep < m_limits.maxSweeps && m > 0; ++sweep) {
@@ -167,9 +160,11 @@ void ContactCoupling::solve(const std::vector<contact::LumenNodeContact>& contac
             // load changes so far (the current shapes carry the old loads).
             Eigen::Vector3d moved = Eigen::Vector3d::Zero();
             if (prefix) {
-                moved = m_skew[a].transpose() * (m_sumA[a] * s1 - m_sumB[a] * s0 + r1) + m_sumC[a] * s0 -
-                        m_sumB[a].transpose() * s1 + r2;
-                for (const size_t b : m_wallShared[a]) {
+                const auto node = static_cast<size_t>(m_active[a]);
+                const Eigen::Matrix3d& sumB = m_prefixB[node];
+                moved = m_skew[a].transpose() * (m_prefixA[node] * s1 - sumB * s0 + r1) +
+                        m_prefixC[node] * s0 - sumB.transpose() * s1 + r2;
+                for (size_t b = m_wallSpan[a].first; b < m_wallSpan[a].second; ++b) {
                     moved += m_wall[a * m + b] * (m_force[b] - m_startForce[b]);
                 }
             } else {

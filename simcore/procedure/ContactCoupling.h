@@ -65,6 +65,7 @@
 
 #include <Eigen/Core>
 
+#include <utility>
 #include <vector>
 
 namespace colonosim::procedure {
@@ -158,11 +159,13 @@ private:
     // seen and is then reused, so a warm loop does not allocate.
     std::vector<Eigen::Matrix3d> m_block;  ///< C_ab, row-major over (a, b), m/N
     // Per active node a, for the prefix sweeps (SweepLimits::prefixSums):
-    // X_a = [x_a]x, the prefix sums A_a, B_a, C_a up to its joint, and the
-    // two matrices that move it to the base side's sums.
-    std::vector<Eigen::Matrix3d> m_skew, m_sumA, m_sumB, m_sumC, m_toR1, m_toR2;
-    std::vector<std::vector<size_t>> m_wallShared;  ///< per a: the b whose wall compliance with a is not 0
-    std::vector<double> m_wall;                     ///< wall compliance shared by (a, b), m/N
+    // X_a = [x_a]x and the two matrices that move it to the base side's sums
+    // (A_a, B_a, C_a are the prefix sums at its node, m_prefix*).
+    std::vector<Eigen::Matrix3d> m_skew, m_toR1, m_toR2;
+    std::vector<double> m_wall;  ///< wall compliance shared by (a, b), m/N
+    /// Per a: the b in [first, second) that may share wall compliance with it
+    /// (empty when first >= second); the rest of its row of m_wall is 0.
+    std::vector<std::pair<size_t, size_t>> m_wallSpan;
     std::vector<Eigen::Vector3d> m_force, m_startForce, m_normal;
     std::vector<double> m_lambda, m_startLambda;
     std::vector<double> m_slipCompliance;  ///< R_a, m/N (measureSlipCompliance())
