@@ -5,12 +5,15 @@
 // the scope's step guard refused, and what the contact solve cost: the
 // wall-clock time per loop step, the nodes in the solve, the share of the
 // steps whose last solve stopped at the sweep cap and the load change it
-// left (contact.sweepTolerance is 0.1 mN). The figures behind the
+// left (contact.sweepTolerance is 0.1 mN), and what the patient felt: the
+// peak handle force, the peak contact load on the wall, the peak mesentery
+// strain and the steps recorded as perforating. The figures behind the
 // parameters' defaults, and behind scope.maxNodeStep's (--max-node-step 1
 // leaves the guard out).
 //
 //   contact_stability [--seconds S] [--seeds 0,1,2,3] [--relaxation 1,0.5,0.3] [--max-node-step M]
 //                     [--sweeps 30] [--operator expert|novice] [--prefix-sweeps 0|1]
+//                     [--element-points 0,1]
 //
 // Seed 0 is the default colon; any other seed is a generated patient.
 
@@ -48,16 +51,22 @@ struct Outcome {
     double nodes = 0;           ///< nodes in the contact solve, summed over the steps
     long capped = 0;            ///< steps whose last contact solve stopped at the sweep cap
     double cappedResidual = 0;  ///< the load change those solves left, summed, N
+    double handleForce = 0;     ///< largest |handle force|, N
+    double wallForce = 0;       ///< largest contact load on the wall, N
+    double mesentery = 0;       ///< largest mesentery strain
+    long perforating = 0;       ///< steps recorded as perforating
 };
 
 Outcome runOperator(std::uint64_t seed, const procedure::OperatorStyle& style, double relaxation,
-                    double maxNodeStep, double sweeps, double prefixSweeps, double seconds)
+                    double maxNodeStep, double sweeps, double prefixSweeps, double elementPoints,
+                    double seconds)
 {
     const bench::Patient patient = bench::patientFromSeed(seed);
     procedure::ProcedureSettings settings = patient.settings;
     settings.contact.loadRelaxation = relaxation;
     settings.contact.couplingSweeps = sweeps;
     settings.contact.prefixSweeps = prefixSweeps;
+    settings.contact.elementPoints = elementPoints;
     settings.scope.maxNodeStep = maxNodeStep;
     const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(patient.anatomy);
     procedure::ProcedureLoop loop(anatomy, settings);
@@ -85,6 +94,11 @@ Outcome runOperator(std::uint64_t seed, const procedure::OperatorStyle& style, d
             ++outcome.capped;
             outcome.cappedResidual += loop.coupling().residual();
         }
+        const procedure::ProcedureFrame& frame = loop.lastFrame();
+        outcome.handleForce = std::max(outcome.handleForce, std::abs(frame.handleForce));
+        outcome.wallForce = std::max(outcome.wallForce, frame.maxWallForce);
+        outcome.mesentery = std::max(outcome.mesentery, frame.mesenteryStrain);
+        outcome.perforating += frame.perforation ? 1 : 0;
         previous = tip;
     }
     return outcome;
@@ -101,6 +115,7 @@ int main(int argc, char** argv)
     std::vector<double> sweepCaps{contact::ContactParameters{}.couplingSweeps};
     bool novice = false;
     double prefixSweeps = contact::ContactParameters{}.prefixSweeps;
+    std::vector<double> elementPoints{contact::ContactParameters{}.elementPoints};
     try {
         bench::forEachOption(argc, argv, [&](const std::string& flag, const std::string& value) {
             if (flag == "--seconds") {
@@ -118,6 +133,9 @@ int main(int argc, char** argv)
             } else if (flag == "--prefix-sweeps") {
                 const auto& spec = contact::ContactParameters::prefixSweepsSpec;
                 prefixSweeps = bench::parseList(flag, value, spec.minValue, spec.maxValue).front();
+            } else if (flag == "--element-points") {
+                const auto& spec = contact::ContactParameters::elementPointsSpec;
+                elementPoints = bench::parseList(flag, value, spec.minValue, spec.maxValue);
             } else if (flag == "--operator") {
                 if (value != "expert" && value != "novice") {
                     throw std::invalid_argument("--operator = '" + value + "' is not one of expert, novice");
@@ -127,7 +145,7 @@ int main(int argc, char** argv)
                 throw std::invalid_argument(
                     "unknown option '" + flag +
                     "' (allowed: --seconds, --seeds, --relaxation, --max-node-step, --sweeps, --operator, "
-                    "--prefix-sweeps)");
+                    "--prefix-sweeps, --element-points)");
             }
         });
     } catch (const std::exception& error) {
@@ -140,32 +158,39 @@ int main(int argc, char** argv)
         "steps with the tip more than a scope diameter into the wall; guarded: steps with a chain solve "
         "refused by the step guard; us/step: wall-clock time of a loop step; nodes: mean nodes in the "
         "contact solve; capped: steps whose last solve stopped at the sweep cap with loads still changing, "
-        "and the mean change left (mN)\n",
+        "and the mean change left (mN); points: contact.elementPoints; handle_N, wall_N: peak handle force "
+        "and peak contact load on the wall; mesentery: peak strain; perforating: steps recorded so\n",
         novice ? "novice" : "expert", seconds, maxNodeStep, prefixSweeps);
-    std::printf("%-10s %-6s %-6s %10s %10s %12s %12s %9s %9s %7s %8s %10s\n", "relaxation", "sweeps", "seed",
-                "fast", "outside", "deepest_mm", "furthest_m", "guarded", "us/step", "nodes", "capped",
-                "left_mN");
+    std::printf("%-10s %-6s %-6s %-6s %10s %10s %12s %12s %9s %9s %7s %8s %10s %9s %9s %10s %11s\n",
+                "relaxation", "sweeps", "points", "seed", "fast", "outside", "deepest_mm", "furthest_m",
+                "guarded", "us/step", "nodes", "capped", "left_mN", "handle_N", "wall_N", "mesentery",
+                "perforating");
     const procedure::OperatorStyle style = novice ? procedure::noviceStyle() : procedure::expertStyle();
-    for (const double sweeps : sweepCaps) {
-        for (const double relaxation : relaxations) {
-            Outcome total;
-            for (const std::uint64_t seed : seeds) {
-                const Outcome o =
-                    runOperator(seed, style, relaxation, maxNodeStep, sweeps, prefixSweeps, seconds);
-                const double steps = static_cast<double>(std::max(o.steps, 1L));
-                std::printf(
-                    "%-10.2f %-6.0f %-6llu %10ld %10ld %12.1f %12.3f %9ld %9.0f %7.1f %7.1f%% %10.3f\n",
-                    relaxation, sweeps, static_cast<unsigned long long>(seed), o.fastSteps, o.outside,
-                    o.deepest * 1e3, o.furthest, o.guarded, o.seconds / steps * 1e6, o.nodes / steps,
-                    100.0 * static_cast<double>(o.capped) / steps,
-                    o.capped > 0 ? o.cappedResidual / static_cast<double>(o.capped) * 1e3 : 0.0);
-                std::fflush(stdout);
-                total.fastSteps += o.fastSteps;
-                total.outside += o.outside;
-                total.deepest = std::max(total.deepest, o.deepest);
+    for (const double points : elementPoints) {
+        for (const double sweeps : sweepCaps) {
+            for (const double relaxation : relaxations) {
+                Outcome total;
+                for (const std::uint64_t seed : seeds) {
+                    const Outcome o = runOperator(seed, style, relaxation, maxNodeStep, sweeps, prefixSweeps,
+                                                  points, seconds);
+                    const double steps = static_cast<double>(std::max(o.steps, 1L));
+                    std::printf("%-10.2f %-6.0f %-6.0f %-6llu %10ld %10ld %12.1f %12.3f %9ld %9.0f %7.1f "
+                                "%7.1f%% %10.3f "
+                                "%9.1f %9.1f %10.3f %11ld\n",
+                                relaxation, sweeps, points, static_cast<unsigned long long>(seed),
+                                o.fastSteps, o.outside, o.deepest * 1e3, o.furthest, o.guarded,
+                                o.seconds / steps * 1e6, o.nodes / steps,
+                                100.0 * static_cast<double>(o.capped) / steps,
+                                o.capped > 0 ? o.cappedResidual / static_cast<double>(o.capped) * 1e3 : 0.0,
+                                o.handleForce, o.wallForce, o.mesentery, o.perforating);
+                    std::fflush(stdout);
+                    total.fastSteps += o.fastSteps;
+                    total.outside += o.outside;
+                    total.deepest = std::max(total.deepest, o.deepest);
+                }
+                std::printf("%-10.2f %-6.0f %-6.0f %-6s %10ld %10ld %12.1f\n", relaxation, sweeps, points,
+                            "all", total.fastSteps, total.outside, total.deepest * 1e3);
             }
-            std::printf("%-10.2f %-6.0f %-6s %10ld %10ld %12.1f\n", relaxation, sweeps, "all",
-                        total.fastSteps, total.outside, total.deepest * 1e3);
         }
     }
     return 0;

@@ -6,7 +6,7 @@ namespace colonosim::contact {
 
 namespace {
 using P = ContactParameters;
-constexpr std::array<Field<P>, 10> kContactFields{{
+constexpr std::array<Field<P>, 11> kContactFields{{
     {&P::stiffnessSpec, &P::contactStiffness},
     {&P::dampingSpec, &P::contactDamping},
     {&P::frictionSpec, &P::frictionCoefficient},
@@ -15,6 +15,7 @@ constexpr std::array<Field<P>, 10> kContactFields{{
     {&P::sweepsSpec, &P::couplingSweeps},
     {&P::sweepToleranceSpec, &P::sweepTolerance},
     {&P::prefixSweepsSpec, &P::prefixSweeps},
+    {&P::elementPointsSpec, &P::elementPoints},
     {&P::relaxationSpec, &P::loadRelaxation},
     {&P::stepLimitSpec, &P::stepLimit},
 }};

@@ -97,6 +97,20 @@ struct ContactParameters {
         "model choice: 0 keeps the runs the README measured bit for bit; 1 is for measuring what the "
         "solve's cost does past the sigmoid (build/bench/contact_stability --prefix-sweeps)"};
 
+    static constexpr ParameterSpec elementPointsSpec{
+        "elementPoints",
+        "1",
+        0.0,
+        0.0,
+        3.0,
+        "contact points inside each scope element besides its two nodes (rounded; k points at t = j / (k + "
+        "1) "
+        "along the element): the wall is also measured there and the load found at a point is shared by "
+        "the element's two nodes in proportion to where it lies (procedure/ContactCoupling.h)",
+        "model choice: with the nodes alone (0) an element's chord crosses a tight bend's wall unseen: a "
+        "withdrawal drags the bend out with the shaft and the expert stalls at a sigmoid bend on generated "
+        "seed 1 (README, known limits)"};
+
     static constexpr ParameterSpec relaxationSpec{
         "loadRelaxation",
         "1",
@@ -128,6 +142,7 @@ struct ContactParameters {
     double couplingSweeps = sweepsSpec.defaultValue;
     double sweepTolerance = sweepToleranceSpec.defaultValue;
     double prefixSweeps = prefixSweepsSpec.defaultValue;
+    double elementPoints = elementPointsSpec.defaultValue;
     double loadRelaxation = relaxationSpec.defaultValue;
     double stepLimit = stepLimitSpec.defaultValue;
 

@@ -39,10 +39,10 @@ constexpr double kActiveGap = 5e-3;          ///< m: nodes this close to the wal
 const double kCarryCosine = std::sqrt(0.5);  ///< a load follows a normal that turned less than 45 degrees
 }  // namespace
 
-void ContactCoupling::align(int numNodes, int addedAtBase)
+void ContactCoupling::align(int numPoints, int addedAtBase)
 {
-    shiftToTip(m_load, numNodes, addedAtBase, Eigen::Vector3d::Zero().eval());
-    shiftToTip(m_stepDepth, numNodes, addedAtBase, std::numeric_limits<double>::quiet_NaN());
+    shiftToTip(m_load, numPoints, addedAtBase, Eigen::Vector3d::Zero().eval());
+    shiftToTip(m_stepDepth, numPoints, addedAtBase, std::numeric_limits<double>::quiet_NaN());
 }
 
 void ContactCoupling::buildCompliance(const scope::DiscreteRod& rod)
@@ -67,13 +67,16 @@ void ContactCoupling::buildCompliance(const scope::DiscreteRod& rod)
     }
     // C_ab = X_a^T A X_b - X_a^T B - B^T X_b + C from the prefix sums up to
     // joint min(a, b) - 1 (X = [x]x, X^T = -X).
+    // A point inside an element moves as a node there (ContactPoints.h): the
+    // same sums up to the joints that move both.
     const auto m = m_active.size();
     m_block.resize(m * m);
     for (size_t a = 0; a < m; ++a) {
-        const Eigen::Matrix3d xa = skew(rod.position[static_cast<size_t>(m_active[a])]);
+        const Eigen::Matrix3d xa = skew(m_at[a]);
         for (size_t b = a; b < m; ++b) {
-            const Eigen::Matrix3d xb = skew(rod.position[static_cast<size_t>(m_active[b])]);
-            const auto upto = static_cast<size_t>(std::min(m_active[a], m_active[b]));
+            const Eigen::Matrix3d xb = skew(m_at[b]);
+            const auto upto =
+                static_cast<size_t>(std::min(m_points.joints(m_active[a]), m_points.joints(m_active[b])));
             const Eigen::Matrix3d& pa = m_prefixA[upto];
             const Eigen::Matrix3d& pb = m_prefixB[upto];
             const Eigen::Matrix3d c =
@@ -89,8 +92,8 @@ void ContactCoupling::buildCompliance(const scope::DiscreteRod& rod)
         v->resize(m);
     }
     for (size_t a = 0; a < m; ++a) {
-        const auto node = static_cast<size_t>(m_active[a]);
-        m_skew[a] = skew(rod.position[node]);
+        const auto node = static_cast<size_t>(m_points.joints(m_active[a]));
+        m_skew[a] = skew(m_at[a]);
         m_toR1[a] = m_prefixA[node] * m_skew[a] - m_prefixB[node];
         m_toR2[a] = m_prefixC[node] - m_prefixB[node].transpose() * m_skew[a];
     }
@@ -132,8 +135,7 @@ void ContactCoupling::addWallCompliance(const std::vector<contact::LumenNodeCont
     }
 }
 
-void ContactCoupling::solve(const std::vector<contact::LumenNodeContact>& contacts,
-                            const scope::DiscreteRod& rod)
+void ContactCoupling::solve(const std::vector<contact::LumenNodeContact>& contacts)
 {
     // The start state (loads carried onto the present normals) is update()'s.
     const auto m = m_active.size();
@@ -160,7 +162,7 @@ void ContactCoupling::solve(const std::vector<contact::LumenNodeContact>& contac
             // load changes so far (the current shapes carry the old loads).
             Eigen::Vector3d moved = Eigen::Vector3d::Zero();
             if (prefix) {
-                const auto node = static_cast<size_t>(m_active[a]);
+                const auto node = static_cast<size_t>(m_points.joints(m_active[a]));
                 const Eigen::Matrix3d& sumB = m_prefixB[node];
                 moved = m_skew[a].transpose() * (m_prefixA[node] * s1 - sumB * s0 + r1) +
                         m_prefixC[node] * s0 - sumB.transpose() * s1 + r2;
@@ -175,7 +177,7 @@ void ContactCoupling::solve(const std::vector<contact::LumenNodeContact>& contac
             }
             const contact::LumenNodeContact& c = contacts[static_cast<size_t>(m_active[a])];
             Eigen::Vector3d n;
-            const double depth = c.depthAt(rod.position[static_cast<size_t>(m_active[a])] + moved, n);
+            const double depth = c.depthAt(m_at[a] + moved, n);
             // The normal turns as the node moves round the wall, by dx / lever,
             // and the load turns with it: a gain of lambda G_t / lever (G_t
             // the node's compliance along the turn), which a compliant tip or
@@ -227,30 +229,35 @@ void ContactCoupling::update(const std::vector<contact::LumenNodeContact>& conta
                              const scope::DiscreteRod& rod, int addedAtBase,
                              const Eigen::VectorXd& wallCompliance, bool newStep)
 {
-    const int n = std::min(rod.numNodes(), static_cast<int>(contacts.size()));
-    align(rod.numNodes(), addedAtBase);
+    const int points = m_points.count(rod.numNodes());
+    const int n = std::min(points, static_cast<int>(contacts.size()));
+    align(points, addedAtBase * m_points.stride);
     if (newStep) {
-        // How far each node came into its wall over the last step: its depth
-        // now against its depth at the last step's start (none for a node
+        // How far each point came into its wall over the last step: its depth
+        // now against its depth at the last step's start (none for a point
         // just inserted).
-        m_growth.assign(static_cast<size_t>(rod.numNodes()), 0.0);
-        for (int node = 0; node < n; ++node) {
-            const auto i = static_cast<size_t>(node);
+        m_growth.assign(static_cast<size_t>(points), 0.0);
+        for (int point = 0; point < n; ++point) {
+            const auto i = static_cast<size_t>(point);
             const double before = m_stepDepth[i];
             m_growth[i] = std::isnan(before) ? 0.0 : std::max(0.0, contacts[i].depth - before);
             m_stepDepth[i] = contacts[i].depth;
         }
     } else {
-        m_growth.resize(static_cast<size_t>(rod.numNodes()), 0.0);
+        m_growth.resize(static_cast<size_t>(points), 0.0);
     }
-    // The update covers the nodes near or in the wall and those still
+    // The update covers the points near or in the wall and those still
     // carrying a load (which the signed depth may release).
     m_active.clear();
-    for (int node = 0; node < n; ++node) {
-        const auto i = static_cast<size_t>(node);
+    for (int point = 0; point < n; ++point) {
+        const auto i = static_cast<size_t>(point);
         if (contacts[i].depth > -kActiveGap || m_load[i].squaredNorm() > 0.0) {
-            m_active.push_back(node);
+            m_active.push_back(point);
         }
+    }
+    m_at.resize(m_active.size());
+    for (size_t a = 0; a < m_active.size(); ++a) {
+        m_at[a] = m_points.at(rod.position, m_active[a]);
     }
     buildCompliance(rod);
     addWallCompliance(contacts, wallCompliance);
@@ -260,23 +267,21 @@ void ContactCoupling::update(const std::vector<contact::LumenNodeContact>& conta
     m_normal.resize(m);
     m_lambda.resize(m);
     m_startLambda.resize(m);
-    m_baseForce.resize(m);
     m_contacts = &contacts;
     for (size_t a = 0; a < m; ++a) {
-        const auto node = static_cast<size_t>(m_active[a]);
-        const contact::LumenNodeContact& c = contacts[node];
+        const auto point = static_cast<size_t>(m_active[a]);
+        const contact::LumenNodeContact& c = contacts[point];
         // The load keeps its magnitude and takes the wall's present normal
-        // (a node sliding round a curved wall turns its normal, not its
+        // (a point sliding round a curved wall turns its normal, not its
         // load) when the normal has turned by less than 45 degrees; beyond
         // that it is the part along the new normal.
         m_normal[a] = c.normal;
-        m_startForce[a] = m_load[node];
-        const double carried = m_load[node].norm();
-        const double along = m_load[node].dot(c.normal);
+        m_startForce[a] = m_load[point];
+        const double carried = m_load[point].norm();
+        const double along = m_load[point].dot(c.normal);
         m_startLambda[a] = along > kCarryCosine * carried ? carried : std::max(0.0, along);
         m_lambda[a] = m_startLambda[a];
         m_force[a] = m_lambda[a] * c.normal;
-        m_baseForce[a] = rod.force[node];
     }
     m_sweeps = 0;
 }
@@ -324,7 +329,7 @@ void ContactCoupling::measureSlipCompliance()
 void ContactCoupling::solveAndApply(scope::DiscreteRod& rod, const contact::LumenContact& law)
 {
     const std::vector<contact::LumenNodeContact>& contacts = *m_contacts;
-    solve(contacts, rod);
+    solve(contacts);
     relax();
     measureSlipCompliance();
     for (Eigen::Vector3d& load : m_load) {
@@ -332,7 +337,7 @@ void ContactCoupling::solveAndApply(scope::DiscreteRod& rod, const contact::Lume
     }
     m_loads.setZero(3, static_cast<Eigen::Index>(m_load.size()));
     for (size_t a = 0; a < m_active.size(); ++a) {
-        const auto node = static_cast<size_t>(m_active[a]);
+        const auto point = static_cast<size_t>(m_active[a]);
         // Friction opposes the slip measured this step, with the normal load
         // just settled on. It is explicit, so its stick is regularised below
         // the speed at which the friction of all the contacts together would
@@ -343,10 +348,18 @@ void ContactCoupling::solveAndApply(scope::DiscreteRod& rod, const contact::Lume
         // swung it from side to side by up to 20 mm a step.
         const double stick =
             2.0 * law.parameters().frictionCoefficient * m_lambda[a] * m_slipCompliance[a] / m_loopStep;
-        const Eigen::Vector3d load = m_force[a] + law.friction(contacts[node], m_lambda[a], stick);
-        m_load[node] = m_force[a];
-        m_loads.col(static_cast<Eigen::Index>(node)) = load;
-        rod.force[node] = m_baseForce[a] + load;
+        const Eigen::Vector3d load = m_force[a] + law.friction(contacts[point], m_lambda[a], stick);
+        m_load[point] = m_force[a];
+        m_loads.col(static_cast<Eigen::Index>(point)) = load;
+        // The rod's node forces hold its base loads (gravity) since update().
+        const auto base = static_cast<size_t>(m_points.node(m_active[a]));
+        const double t = m_points.share(m_active[a]);
+        if (t == 0.0) {
+            rod.force[base] += load;
+        } else {
+            rod.force[base] += (1.0 - t) * load;
+            rod.force[base + 1] += t * load;
+        }
     }
 }
 

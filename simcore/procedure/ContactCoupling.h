@@ -48,6 +48,15 @@
 /// growing by maxStep a step alone let the tip through the wall (generated
 /// seed 1, the novice at the cecum: 53 mm past it under 1-3 N).
 ///
+/// Contact points. The contacts are those of the contact points
+/// (ContactPoints.h): the nodes and, with contact.elementPoints, points
+/// inside each element. A point inside an element moves as a node there
+/// would (the elements are rigid between the joints), so its blocks C_ab are
+/// the same sums with x_a its position and the joints that move it, and the
+/// load it settles on reaches the rod shared by the element's two nodes. With
+/// the nodes alone, 20 mm apart, an element's chord crossed the wall of a
+/// tight bend unseen (README, known limits).
+///
 /// Relaxation. The linear model leaves out how the loads' lever arms change
 /// as the shaft moves (its geometric stiffness: the chain's response to a
 /// load on a shaft bent round the sigmoid under 5-10 N is 10-30% larger than
@@ -61,6 +70,7 @@
 /// the step and the next steps, 1 ms each).
 ///
 #include "simcore/contact/LumenContact.h"
+#include "simcore/procedure/ContactPoints.h"
 #include "simcore/scope/DiscreteRod.h"
 
 #include <Eigen/Core>
@@ -94,16 +104,19 @@ public:
     /// `contactStiffness` k_c, N/m; `maxStep` the trust region, m per loop
     /// step; `loopStep` dt, s; `relaxation` omega in (0, 1], the fraction of
     /// the solved load change that each solve applies.
+    /// `points`: where along the scope the contacts are (ContactPoints.h;
+    /// the nodes alone by default).
     ContactCoupling(double contactStiffness, double maxStep, double loopStep, double relaxation,
-                    SweepLimits sweeps = {})
+                    SweepLimits sweeps = {}, ContactPoints points = {})
         : m_stiffness(contactStiffness), m_maxStep(maxStep), m_loopStep(loopStep), m_relaxation(relaxation),
-          m_limits(sweeps)
+          m_limits(sweeps), m_points(points)
     {}
 
-    /// Updates the node loads from `contacts` (one per inserted node, measured
-    /// on the current scope shape, which carries the loads of the previous
-    /// update). `addedAtBase` nodes entered the rod at the base since the last
-    /// call (negative when nodes left); `wallCompliance` is dt^2 / (2 m) per wall
+    /// Updates the loads from `contacts` (one per contact point of the
+    /// inserted rod, ContactPoints.h, measured on the current scope shape,
+    /// which carries the loads of the previous update). `addedAtBase` nodes
+    /// entered the rod at the base since the last call (negative when nodes
+    /// left); `wallCompliance` is dt^2 / (2 m) per wall
     /// node (0 for fixed nodes), m/N. The coupling reads `contacts` again in
     /// solveAndApply(): they must outlive that call.
     /// `newStep`: the first update of a loop step (the depths it is given
@@ -120,12 +133,13 @@ public:
     /// loads().
     void solveAndApply(scope::DiscreteRod& rod, const contact::LumenContact& law);
 
-    /// Contact load (normal and friction) on each inserted node (base to tip), N;
-    /// the wall carries the opposite, spread over the contact's wall nodes.
+    /// Contact load (normal and friction) at each contact point (base to tip;
+    /// the nodes themselves by default), N; the wall carries the opposite,
+    /// spread over the contact's wall nodes.
     [[nodiscard]] const Eigen::Matrix3Xd& loads() const { return m_loads; }
-    /// Normal load carried by each node, N (world).
+    /// Normal load carried at each contact point, N (world).
     [[nodiscard]] const std::vector<Eigen::Vector3d>& normalLoads() const { return m_load; }
-    /// The nodes in this step's update, and their normal compliance G, m/N.
+    /// The contact points in this step's update, and their normal compliance G, m/N.
     [[nodiscard]] const std::vector<int>& activeNodes() const { return m_active; }
     [[nodiscard]] Eigen::MatrixXd delassus() const;
     /// Gauss-Seidel sweeps of the last update.
@@ -134,21 +148,23 @@ public:
     /// below the tolerance when the sweeps converged, what was left when
     /// they stopped at the cap.
     [[nodiscard]] double residual() const { return m_residual; }
+    [[nodiscard]] const ContactPoints& points() const { return m_points; }
 
 private:
-    void align(int numNodes, int addedAtBase);
+    void align(int numPoints, int addedAtBase);
     void relax();
     void measureSlipCompliance();
     void buildCompliance(const scope::DiscreteRod& rod);
     void addWallCompliance(const std::vector<contact::LumenNodeContact>& contacts,
                            const Eigen::VectorXd& wallCompliance);
-    void solve(const std::vector<contact::LumenNodeContact>& contacts, const scope::DiscreteRod& rod);
+    void solve(const std::vector<contact::LumenNodeContact>& contacts);
 
     double m_stiffness;
     double m_maxStep;
     double m_loopStep;
     double m_relaxation;
     SweepLimits m_limits;
+    ContactPoints m_points;
     int m_sweeps = 0;
     double m_residual = 0.0;
     std::vector<Eigen::Vector3d> m_load;  ///< normal load per node (lambda n), N
@@ -169,7 +185,7 @@ private:
     std::vector<Eigen::Vector3d> m_force, m_startForce, m_normal;
     std::vector<double> m_lambda, m_startLambda;
     std::vector<double> m_slipCompliance;  ///< R_a, m/N (measureSlipCompliance())
-    std::vector<Eigen::Vector3d> m_baseForce;
+    std::vector<Eigen::Vector3d> m_at;     ///< each active point's position, m
     const std::vector<contact::LumenNodeContact>* m_contacts = nullptr;
     Eigen::Matrix3Xd m_loads;
     // Prefix sums over the joints (A = sum W, B = sum W X, C = sum X^T W X).

@@ -53,7 +53,8 @@ ProcedureLoop::ProcedureLoop(const geometry::ColonAnatomy& anatomy, const Proced
       m_coupling(settings.contact.contactStiffness, settings.contact.stepLimit, settings.stepping.loopStep,
                  settings.contact.loadRelaxation,
                  {static_cast<int>(std::lround(settings.contact.couplingSweeps)),
-                  settings.contact.sweepTolerance, std::lround(settings.contact.prefixSweeps) != 0}),
+                  settings.contact.sweepTolerance, std::lround(settings.contact.prefixSweeps) != 0},
+                 ContactPoints{1 + static_cast<int>(std::lround(settings.contact.elementPoints))}),
       m_loops(anatomy.centreline, settings.loops),
       m_discomfort(withFailureStrain(settings.discomfort, settings.tissue.mesenteryMaxStrain)),
       m_lesions(anatomy, settings.lesions, settings.viewing), m_bleeding(settings.bleeding),
@@ -158,8 +159,12 @@ void ProcedureLoop::applyContact()
 
 void ProcedureLoop::solveContact(const Eigen::Matrix3Xd& scope, int addedAtBase, bool wallMoved)
 {
-    const auto& contacts = m_contact.compute(scope, m_scopeVelocity, 0.5 * m_settings.scope.outerDiameter,
-                                             m_wallAhead, m_colon.body.velocities(), addedAtBase, wallMoved);
+    const ContactPoints& points = m_coupling.points();
+    points.interpolate(scope, m_points);
+    points.interpolate(m_scopeVelocity, m_pointVelocity);
+    const auto& contacts =
+        m_contact.compute(m_points, m_pointVelocity, 0.5 * m_settings.scope.outerDiameter, m_wallAhead,
+                          m_colon.body.velocities(), addedAtBase * points.stride, wallMoved);
     m_scope.clearLoads();
     m_scope.addGravity(m_settings.environment.gravity *
                        physics::downDirection(m_settings.environment.patientPosition));
@@ -254,10 +259,12 @@ void ProcedureLoop::observe()
     f.tipPosition = tip.position;
     f.tipDirection = tip.rotation.col(2);
     if (m_steps % m_loopAnalysisSteps == 0) {
+        // The nodes' own contact points: every stride-th from the base.
         const auto& stations = m_contact.contacts();
-        m_nodeArcs.resize(stations.size());
-        for (size_t i = 0; i < stations.size(); ++i) {
-            m_nodeArcs[i] = m_contact.tube().arcLength(stations[i].station);
+        const auto stride = static_cast<size_t>(m_coupling.points().stride);
+        m_nodeArcs.resize(stations.empty() ? 0 : (stations.size() - 1) / stride + 1);
+        for (size_t i = 0; i < m_nodeArcs.size(); ++i) {
+            m_nodeArcs[i] = m_contact.tube().arcLength(stations[i * stride].station);
         }
         m_loops.update(m_scopeNow, m_input.insertion, m_nodeArcs);
     }

@@ -160,8 +160,10 @@ private:
     Eigen::Matrix3Xd m_scopeAligned;  ///< the previous shape aligned from the tip (continuous detection)
     Eigen::Matrix3Xd m_scopePass;     ///< the shape a coupling pass re-measures the contact on
     Eigen::Matrix3Xd m_passLoads;     ///< the previous pass's contact loads
-    int m_passes = 0;                 ///< coupling passes of the last step
-    double m_maxWallForce = 0.0;      ///< largest contact load on one scope node this step, N
+    /// The contact points (ContactPoints.h) of the shape being measured and their velocities.
+    Eigen::Matrix3Xd m_points, m_pointVelocity;
+    int m_passes = 0;             ///< coupling passes of the last step
+    double m_maxWallForce = 0.0;  ///< largest contact load on one scope node this step, N
     double m_time = 0.0;
     long m_steps = 0;
 };

@@ -23,6 +23,7 @@ using colonosim::contact::ContactParameters;
 using colonosim::contact::LumenContact;
 using colonosim::contact::LumenNodeContact;
 using colonosim::procedure::ContactCoupling;
+using colonosim::procedure::ContactPoints;
 using colonosim::scope::Colonoscope;
 
 constexpr double kStiffness = 1e4;    // N/m, the declared contact stiffness
@@ -39,11 +40,11 @@ Colonoscope straightScope(double insertion)
     return scope;
 }
 
-/// One contact per inserted node: `depths` gives the pressed nodes' depths
-/// (m), every other node is well clear. The wall point is wall node 0.
-std::vector<LumenNodeContact> contactsOn(const Colonoscope& scope, const std::map<int, double>& depths)
+/// One contact per point: `depths` gives the pressed points' depths (m),
+/// every other point is well clear. The wall point is wall node 0.
+std::vector<LumenNodeContact> contactsAt(const std::vector<Eigen::Vector3d>& nodes,
+                                         const std::map<int, double>& depths)
 {
-    const auto nodes = scope.nodePositions();
     std::vector<LumenNodeContact> contacts(nodes.size());
     for (size_t i = 0; i < nodes.size(); ++i) {
         const auto it = depths.find(static_cast<int>(i));
@@ -61,6 +62,24 @@ std::vector<LumenNodeContact> contactsOn(const Colonoscope& scope, const std::ma
         c.scopeRadius = kRadius;
     }
     return contacts;
+}
+
+/// One contact per inserted node.
+std::vector<LumenNodeContact> contactsOn(const Colonoscope& scope, const std::map<int, double>& depths)
+{
+    const auto nodes = scope.nodePositions();
+    return contactsAt({nodes.begin(), nodes.end()}, depths);
+}
+
+/// One contact per contact point of `points` along the inserted rod.
+std::vector<LumenNodeContact> contactsOn(const Colonoscope& scope, const ContactPoints& points,
+                                         const std::map<int, double>& depths)
+{
+    std::vector<Eigen::Vector3d> at;
+    for (int p = 0; p < points.count(scope.numInsertedNodes()); ++p) {
+        at.push_back(points.at(scope.rod().position, p));
+    }
+    return contactsAt(at, depths);
 }
 
 /// The contact law (its parameters and friction), frictionless here; its
@@ -487,3 +506,64 @@ TEST(ContactCoupling, PrefixSweepsFollowTheDenseSweepsToRounding)
 }
 
 }  // namespace
+
+// A point inside an element (contact.elementPoints) is as compliant as the
+// rod at that place: a force there, shared by the element's two nodes in
+// proportion to where it lies, moves it by G along the normal, as the chain
+// solver finds; and the load the coupling settles on reaches the rod as
+// those two shares.
+TEST(ContactCoupling, APointInsideAnElementIsAsCompliantAsTheRodThere)
+{
+    Colonoscope scope = straightScope(0.2);
+    const int tip = scope.numInsertedNodes() - 1;
+    for (const int inner : {1, 3}) {
+        const ContactPoints points{inner + 1};
+        // The last element's first inner point, a quarter or half of the way.
+        const int point = points.count(tip + 1) - 1 - inner;
+        ASSERT_EQ(points.node(point), tip - 1);
+        const double t = points.share(point);
+        EXPECT_DOUBLE_EQ(t, 1.0 / (inner + 1));
+        const double depth = 1e-3;  // m
+        const auto contacts = contactsOn(scope, points, {{point, depth}});
+        ContactCoupling coupling(kStiffness, 1.0, kLoopStep, 1.0, {}, points);
+        coupling.update(contacts, scope.rod(), 0, kRigidWall);
+        ASSERT_EQ(coupling.activeNodes().size(), 1U);
+        const double g = coupling.delassus()(0, 0);
+
+        const double f = 1e-4;  // N
+        const auto at = [&] { return points.at(scope.rod().position, point); };
+        const Eigen::Vector3d before = at();
+        scope.clearLoads();
+        scope.setNodeForce(tip - 1, Eigen::Vector3d(0.0, (1.0 - t) * f, 0.0));
+        scope.setNodeForce(tip, Eigen::Vector3d(0.0, t * f, 0.0));
+        for (int s = 0; s < 40; ++s) {
+            scope.step();
+        }
+        const double moved = (at() - before).y();
+        scope.clearLoads();
+        for (int s = 0; s < 40; ++s) {
+            scope.step();
+        }
+        EXPECT_NEAR(g, moved / f, 1e-3 * g) << inner << " inner points";
+        // Between the nodes' own compliances: the point lies between them.
+        const auto nodeContacts = contactsOn(scope, {{tip - 1, 1e-6}, {tip, 1e-6}});
+        ContactCoupling nodes(kStiffness, 1.0, kLoopStep, 1.0);
+        nodes.update(nodeContacts, scope.rod(), 0, kRigidWall);
+        const Eigen::MatrixXd gn = nodes.delassus();
+        EXPECT_GT(g, gn(0, 0));
+        EXPECT_LT(g, gn(1, 1));
+
+        scope.clearLoads();
+        coupling.update(contacts, scope.rod(), 0, kRigidWall);
+        coupling.solveAndApply(scope.rod(), law());
+        const double lambda = coupling.loads().col(point).y();
+        EXPECT_NEAR(lambda, kStiffness * depth / (1.0 + kStiffness * g), 1e-3 * lambda);
+        ASSERT_EQ(coupling.loads().cols(), points.count(tip + 1));
+        EXPECT_DOUBLE_EQ(scope.rod().force[static_cast<size_t>(tip - 1)].y(), (1.0 - t) * lambda);
+        EXPECT_DOUBLE_EQ(scope.rod().force[static_cast<size_t>(tip)].y(), t * lambda);
+        for (int i = 0; i < tip - 1; ++i) {
+            EXPECT_EQ(scope.rod().force[static_cast<size_t>(i)].norm(), 0.0) << "node " << i;
+        }
+        scope.clearLoads();
+    }
+}
