@@ -54,7 +54,7 @@
 /// would (the elements are rigid between the joints), so its blocks C_ab are
 /// the same sums with x_a its position and the joints that move it, and the
 /// load it settles on reaches the rod shared by the element's two nodes. With
-/// the nodes alone, 20 mm apart, an element's chord crossed the wall of a
+/// the nodes alone, 21.5 mm apart, an element's chord crossed the wall of a
 /// tight bend unseen (README, known limits).
 ///
 /// Relaxation. The linear model leaves out how the loads' lever arms change

@@ -116,6 +116,8 @@ void ProcedureLoop::applyContact()
     // again the one after, and a colon pressed by a still scope kept a
     // load flipping between two values from step to step.
     m_wallAhead = m_colon.body.positions() + m_settings.stepping.loopStep * m_colon.body.velocities();
+    // The contact points' velocities hold for every pass of the step.
+    m_coupling.points().interpolate(m_scopeVelocity, m_pointVelocity);
     solveContact(m_scopeNow, static_cast<int>(shift), true);
     // The coupling's model is linear about the step's start shape; where the
     // chain's nonlinear solve ends elsewhere (a shaft near its buckling load
@@ -161,7 +163,6 @@ void ProcedureLoop::solveContact(const Eigen::Matrix3Xd& scope, int addedAtBase,
 {
     const ContactPoints& points = m_coupling.points();
     points.interpolate(scope, m_points);
-    points.interpolate(m_scopeVelocity, m_pointVelocity);
     const auto& contacts =
         m_contact.compute(m_points, m_pointVelocity, 0.5 * m_settings.scope.outerDiameter, m_wallAhead,
                           m_colon.body.velocities(), addedAtBase * points.stride, wallMoved);
