@@ -6,7 +6,7 @@ namespace colonosim::contact {
 
 namespace {
 using P = ContactParameters;
-constexpr std::array<Field<P>, 11> kContactFields{{
+constexpr std::array<Field<P>, 12> kContactFields{{
     {&P::stiffnessSpec, &P::contactStiffness},
     {&P::dampingSpec, &P::contactDamping},
     {&P::frictionSpec, &P::frictionCoefficient},
@@ -16,6 +16,7 @@ constexpr std::array<Field<P>, 11> kContactFields{{
     {&P::sweepToleranceSpec, &P::sweepTolerance},
     {&P::prefixSweepsSpec, &P::prefixSweeps},
     {&P::elementPointsSpec, &P::elementPoints},
+    {&P::sideNormalsSpec, &P::sideNormals},
     {&P::relaxationSpec, &P::loadRelaxation},
     {&P::stepLimitSpec, &P::stepLimit},
 }};

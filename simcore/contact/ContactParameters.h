@@ -112,6 +112,21 @@ struct ContactParameters {
         "with 0, 14.1 N with 1, at 1.35-1.96 times the step time (build/bench/contact_stability "
         "--element-points; README, known limits)"};
 
+    static constexpr ParameterSpec sideNormalsSpec{
+        "sideNormals",
+        "1",
+        0.0,
+        0.0,
+        1.0,
+        "1: the wall pushes each contact point but the tip across the shaft: its load takes the wall's "
+        "normal "
+        "less the part along the scope's axis there (the wall's normal itself where that part leaves less "
+        "than 0.2 across); 0: along the wall's normal (procedure/ContactCoupling.h)",
+        "model choice: 0 keeps the runs the README measured bit for bit. A shaft lies along the wall it "
+        "touches, so the wall's push on it is across it (friction apart); where the colon is pleated on the "
+        "shaft the sections' cylinders tilt against it and their normals pushed along it (README, known "
+        "limits; build/bench/contact_stability --side-normals)"};
+
     static constexpr ParameterSpec relaxationSpec{
         "loadRelaxation",
         "1",
@@ -144,6 +159,7 @@ struct ContactParameters {
     double sweepTolerance = sweepToleranceSpec.defaultValue;
     double prefixSweeps = prefixSweepsSpec.defaultValue;
     double elementPoints = elementPointsSpec.defaultValue;
+    double sideNormals = sideNormalsSpec.defaultValue;
     double loadRelaxation = relaxationSpec.defaultValue;
     double stepLimit = stepLimitSpec.defaultValue;
 

@@ -37,7 +37,41 @@ void shiftToTip(std::vector<T>& v, int numNodes, int added, const T& empty)
 
 constexpr double kActiveGap = 5e-3;          ///< m: nodes this close to the wall join the update
 const double kCarryCosine = std::sqrt(0.5);  ///< a load follows a normal that turned less than 45 degrees
+constexpr double kLeastAcross = 0.2;  ///< a side normal needs this much of the wall's normal across the shaft
 }  // namespace
+
+void ContactCoupling::measureAxes(const scope::DiscreteRod& rod)
+{
+    // The scope's axis at each active point: its element's inside one, the
+    // chord of its neighbours at a node, the first element at the base; none
+    // at the tip, which meets the wall head on.
+    const std::vector<Eigen::Vector3d>& x = rod.position;
+    const int last = rod.numNodes() - 1;
+    m_axis.resize(m_active.size());
+    for (size_t a = 0; a < m_active.size(); ++a) {
+        const int point = m_active[a];
+        const auto node = static_cast<size_t>(m_points.node(point));
+        Eigen::Vector3d axis = Eigen::Vector3d::Zero();
+        if (point % m_points.stride != 0) {
+            axis = x[node + 1] - x[node];
+        } else if (static_cast<int>(node) < last) {
+            axis = x[node + 1] - x[node == 0 ? node : node - 1];
+        }
+        const double length = axis.norm();
+        m_axis[a] = length > 0.0 ? Eigen::Vector3d(axis / length) : Eigen::Vector3d::Zero();
+    }
+}
+
+Eigen::Vector3d ContactCoupling::loadDirection(size_t a, const Eigen::Vector3d& n) const
+{
+    if (!m_sideNormals) {
+        return n;
+    }
+    const Eigen::Vector3d& axis = m_axis[a];
+    const Eigen::Vector3d across = n - n.dot(axis) * axis;
+    const double left = across.norm();
+    return left < kLeastAcross ? n : Eigen::Vector3d(across / left);
+}
 
 void ContactCoupling::align(int numPoints, int addedAtBase)
 {
@@ -192,13 +226,17 @@ void ContactCoupling::solve(const std::vector<contact::LumenNodeContact>& contac
                 const double gain = m_lambda[a] * along / c.lever;
                 n = (m_normal[a] + turn / (1.0 + gain)).normalized();
             }
-            const double g = n.dot(m_block[a * m + a] * n) + m_wall[a * m + a];
+            // The load's direction; the depth is measured along n.
+            const Eigen::Vector3d d = loadDirection(a, n);
+            const double g = m_sideNormals
+                                 ? std::max(0.0, n.dot(m_block[a * m + a] * d) + m_wall[a * m + a] * n.dot(d))
+                                 : n.dot(m_block[a * m + a] * n) + m_wall[a * m + a];
             double lambda =
                 std::max(0.0, m_lambda[a] + (m_stiffness * depth - m_lambda[a]) / (1.0 + m_stiffness * g));
             // Trust region on the contact-driven motion of this step.
             // The whole motion, not only its normal part: a load along a bent
             // tip's axis swings the tip sideways.
-            const double reach = (m_block[a * m + a] * n).norm() + m_wall[a * m + a];
+            const double reach = (m_block[a * m + a] * d).norm() + m_wall[a * m + a];
             const double limit = m_maxStep / std::max(reach, 1e-12);
             const double raise =
                 (m_maxStep + m_growth[static_cast<size_t>(m_active[a])]) / std::max(reach, 1e-12);
@@ -208,7 +246,7 @@ void ContactCoupling::solve(const std::vector<contact::LumenNodeContact>& contac
                 // Node a leaves the tip side's sums with its old change and
                 // joins the base side's with its new one.
                 const Eigen::Vector3d before = m_force[a] - m_startForce[a];
-                const Eigen::Vector3d after = lambda * n - m_startForce[a];
+                const Eigen::Vector3d after = lambda * d - m_startForce[a];
                 s0 -= before;
                 s1 -= m_skew[a] * before;
                 r1 += m_toR1[a] * after;
@@ -216,7 +254,8 @@ void ContactCoupling::solve(const std::vector<contact::LumenNodeContact>& contac
             }
             m_lambda[a] = lambda;
             m_normal[a] = n;
-            m_force[a] = lambda * n;
+            m_direction[a] = d;
+            m_force[a] = lambda * d;
         }
         m_residual = largest;
         if (largest < m_limits.tolerance) {
@@ -259,12 +298,16 @@ void ContactCoupling::update(const std::vector<contact::LumenNodeContact>& conta
     for (size_t a = 0; a < m_active.size(); ++a) {
         m_at[a] = m_points.at(rod.position, m_active[a]);
     }
+    if (m_sideNormals) {
+        measureAxes(rod);
+    }
     buildCompliance(rod);
     addWallCompliance(contacts, wallCompliance);
     const auto m = m_active.size();
     m_force.resize(m);
     m_startForce.resize(m);
     m_normal.resize(m);
+    m_direction.resize(m);
     m_lambda.resize(m);
     m_startLambda.resize(m);
     m_contacts = &contacts;
@@ -274,14 +317,17 @@ void ContactCoupling::update(const std::vector<contact::LumenNodeContact>& conta
         // The load keeps its magnitude and takes the wall's present normal
         // (a point sliding round a curved wall turns its normal, not its
         // load) when the normal has turned by less than 45 degrees; beyond
-        // that it is the part along the new normal.
+        // that it is the part along the new normal (the load's direction
+        // for that normal, with side normals).
+        const Eigen::Vector3d d = loadDirection(a, c.normal);
         m_normal[a] = c.normal;
+        m_direction[a] = d;
         m_startForce[a] = m_load[point];
         const double carried = m_load[point].norm();
-        const double along = m_load[point].dot(c.normal);
+        const double along = m_load[point].dot(d);
         m_startLambda[a] = along > kCarryCosine * carried ? carried : std::max(0.0, along);
         m_lambda[a] = m_startLambda[a];
-        m_force[a] = m_lambda[a] * c.normal;
+        m_force[a] = m_lambda[a] * d;
     }
     m_sweeps = 0;
 }
@@ -370,8 +416,8 @@ Eigen::MatrixXd ContactCoupling::delassus() const
     for (size_t a = 0; a < m; ++a) {
         for (size_t b = 0; b < m; ++b) {
             g(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b)) =
-                m_normal[a].dot(m_block[a * m + b] * m_normal[b]) +
-                m_wall[a * m + b] * m_normal[a].dot(m_normal[b]);
+                m_normal[a].dot(m_block[a * m + b] * m_direction[b]) +
+                m_wall[a * m + b] * m_normal[a].dot(m_direction[b]);
         }
     }
     return g;

@@ -57,6 +57,19 @@
 /// the nodes alone, 21.5 mm apart, an element's chord crossed the wall of a
 /// tight bend unseen (README, known limits).
 ///
+/// Side normals (contact.sideNormals). A shaft lies along the wall it
+/// touches, so the wall's push on it is across it (friction apart). The
+/// lumen's local wall is the cylinder of a section, and where the colon is
+/// pleated on the shaft the sections tilt against it: their normals pushed
+/// the shaft along its axis, as no smooth wall can. With side normals the
+/// load at every point but the tip takes the wall's normal n less its part
+/// along the scope's axis t there (the element's direction inside an element,
+/// the chord of its neighbours at a node, the first element at the base),
+/// d = (n - (n.t) t) / |n - (n.t) t|, and keeps n where less than 0.2 of it
+/// is left across (a wall met nearly head on). The depth is still measured
+/// along n, so the Newton step's compliance is n^T C d. The tip meets the
+/// wall head on and keeps n.
+///
 /// Relaxation. The linear model leaves out how the loads' lever arms change
 /// as the shaft moves (its geometric stiffness: the chain's response to a
 /// load on a shaft bent round the sigmoid under 5-10 N is 10-30% larger than
@@ -106,10 +119,11 @@ public:
     /// the solved load change that each solve applies.
     /// `points`: where along the scope the contacts are (ContactPoints.h;
     /// the nodes alone by default).
+    /// `sideNormals`: the loads are pushed across the shaft (see above).
     ContactCoupling(double contactStiffness, double maxStep, double loopStep, double relaxation,
-                    SweepLimits sweeps = {}, ContactPoints points = {})
+                    SweepLimits sweeps = {}, ContactPoints points = {}, bool sideNormals = false)
         : m_stiffness(contactStiffness), m_maxStep(maxStep), m_loopStep(loopStep), m_relaxation(relaxation),
-          m_limits(sweeps), m_points(points)
+          m_limits(sweeps), m_points(points), m_sideNormals(sideNormals)
     {}
 
     /// Updates the loads from `contacts` (one per contact point of the
@@ -141,6 +155,8 @@ public:
     [[nodiscard]] const std::vector<Eigen::Vector3d>& normalLoads() const { return m_load; }
     /// The contact points in this step's update, and their normal compliance G, m/N.
     [[nodiscard]] const std::vector<int>& activeNodes() const { return m_active; }
+    /// G_ab = n_a^T (C_ab + W_ab) d_b: how far a unit load at b moves a along
+    /// its wall's normal (d_b = n_b but with side normals).
     [[nodiscard]] Eigen::MatrixXd delassus() const;
     /// Gauss-Seidel sweeps of the last update.
     [[nodiscard]] int sweeps() const { return m_sweeps; }
@@ -158,6 +174,9 @@ private:
     void addWallCompliance(const std::vector<contact::LumenNodeContact>& contacts,
                            const Eigen::VectorXd& wallCompliance);
     void solve(const std::vector<contact::LumenNodeContact>& contacts);
+    void measureAxes(const scope::DiscreteRod& rod);
+    /// The direction of the load at active point a for the wall's normal `n`.
+    [[nodiscard]] Eigen::Vector3d loadDirection(size_t a, const Eigen::Vector3d& n) const;
 
     double m_stiffness;
     double m_maxStep;
@@ -165,6 +184,7 @@ private:
     double m_relaxation;
     SweepLimits m_limits;
     ContactPoints m_points;
+    bool m_sideNormals;
     int m_sweeps = 0;
     double m_residual = 0.0;
     std::vector<Eigen::Vector3d> m_load;  ///< normal load per node (lambda n), N
@@ -183,6 +203,8 @@ private:
     /// (empty when first >= second); the rest of its row of m_wall is 0.
     std::vector<std::pair<size_t, size_t>> m_wallSpan;
     std::vector<Eigen::Vector3d> m_force, m_startForce, m_normal;
+    std::vector<Eigen::Vector3d> m_direction;  ///< each active point's load direction (unit)
+    std::vector<Eigen::Vector3d> m_axis;       ///< the scope's axis there (unit; 0: none), side normals only
     std::vector<double> m_lambda, m_startLambda;
     std::vector<double> m_slipCompliance;  ///< R_a, m/N (measureSlipCompliance())
     std::vector<Eigen::Vector3d> m_at;     ///< each active point's position, m

@@ -567,3 +567,67 @@ TEST(ContactCoupling, APointInsideAnElementIsAsCompliantAsTheRodThere)
         scope.clearLoads();
     }
 }
+
+// Side normals (contact.sideNormals): the wall pushes the shaft across its
+// axis. A node's wall cylinder tilted by theta against the shaft (+x) has the
+// normal (-sin theta, cos theta, 0): the load keeps only its part across the
+// shaft, the depth is still measured along the normal, so the Newton step
+// uses n^T C d, and the tip, which meets the wall head on, keeps the wall's
+// normal, as does a node whose wall is met nearly head on (less than 0.2 of
+// its normal across the shaft).
+TEST(ContactCoupling, SideNormalsPushAcrossTheShaft)
+{
+    const auto tilted = [](std::vector<LumenNodeContact>& contacts, const Colonoscope& scope, int node,
+                           double theta) {
+        LumenNodeContact& c = contacts[static_cast<size_t>(node)];
+        const Eigen::Vector3d normal(-std::sin(theta), std::cos(theta), 0.0);
+        c.normal = normal;
+        c.wallAxis = Eigen::Vector3d(std::cos(theta), std::sin(theta), 0.0);
+        c.wallCentre = scope.nodePositions()[static_cast<size_t>(node)] + c.lever * normal;
+    };
+    const double theta = 0.5;   // rad
+    const double depth = 1e-3;  // m
+    for (const bool side : {false, true}) {
+        Colonoscope scope = straightScope(0.2);
+        const int tip = scope.numInsertedNodes() - 1;
+        const int mid = tip / 2;
+        auto contacts = contactsOn(scope, {{mid, depth}});
+        tilted(contacts, scope, mid, theta);
+        ContactCoupling coupling(kStiffness, 1.0, kLoopStep, 1.0, {}, {}, side);
+        coupling.update(contacts, scope.rod(), 0, kRigidWall);
+        ASSERT_EQ(coupling.activeNodes().size(), 1U);
+        const double g = coupling.delassus()(0, 0);
+        coupling.solveAndApply(scope.rod(), law());
+        const Eigen::Vector3d load = coupling.loads().col(mid);
+        const double lambda = load.norm();
+        EXPECT_NEAR(lambda, kStiffness * depth / (1.0 + kStiffness * g), 1e-3 * lambda) << side;
+        if (side) {
+            EXPECT_NEAR(load.x(), 0.0, 1e-12 * lambda) << "across the shaft";
+            EXPECT_GT(load.y(), 0.0);
+            // n^T C d against n^T C n: the straight shaft gives way across
+            // itself only (C = c e_y e_y^T there), so a load across it moves
+            // the node along n by c cos(theta), one along n by c cos^2(theta).
+            ContactCoupling plain(kStiffness, 1.0, kLoopStep, 1.0);
+            plain.update(contacts, scope.rod(), 0, kRigidWall);
+            EXPECT_NEAR(g * std::cos(theta), plain.delassus()(0, 0), 1e-6 * g);
+        } else {
+            EXPECT_NEAR(load.x() / load.y(), -std::tan(theta), 1e-9) << "along the wall's normal";
+        }
+    }
+    // The tip keeps the wall's normal, and so does a node whose wall is met
+    // nearly head on (its normal 0.1 across the shaft).
+    const double headOn = std::acos(0.1);  // rad
+    for (const bool atTip : {true, false}) {
+        Colonoscope scope = straightScope(0.2);
+        const int node = atTip ? scope.numInsertedNodes() - 1 : scope.numInsertedNodes() / 2;
+        const double angle = atTip ? theta : headOn;
+        auto contacts = contactsOn(scope, {{node, depth}});
+        tilted(contacts, scope, node, angle);
+        ContactCoupling coupling(kStiffness, 1.0, kLoopStep, 1.0, {}, {}, true);
+        coupling.update(contacts, scope.rod(), 0, kRigidWall);
+        coupling.solveAndApply(scope.rod(), law());
+        const Eigen::Vector3d load = coupling.loads().col(node);
+        ASSERT_GT(load.norm(), 0.0);
+        EXPECT_NEAR(load.x() / load.y(), -std::tan(angle), 1e-6) << (atTip ? "the tip" : "head on");
+    }
+}

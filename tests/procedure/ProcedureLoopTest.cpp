@@ -406,10 +406,11 @@ TEST(ProcedureLoop, TheContactIsSolvedAtMostCouplingPassesTimesPerStep)
 // to within what that rounding grows to over its 400 steps.
 TEST(ProcedureLoop, PrefixSweepsFollowTheDenseSweeps)
 {
-    const auto push = [](double prefixSweeps, double elementPoints) {
+    const auto push = [](double prefixSweeps, double elementPoints, double sideNormals) {
         ProcedureSettings settings;
         settings.contact.prefixSweeps = prefixSweeps;
         settings.contact.elementPoints = elementPoints;
+        settings.contact.sideNormals = sideNormals;
         ProcedureLoop loop(defaultColon(), settings);
         InputSample input;
         double loaded = 0.0;
@@ -421,10 +422,11 @@ TEST(ProcedureLoop, PrefixSweepsFollowTheDenseSweeps)
         return std::tuple{loop.scope().tipPose().position, loop.outputs().handleForce, loaded};
     };
     // Also with a contact point inside each element (contact.elementPoints),
-    // whose prefix sums are those of the joints that move it.
-    for (const double points : {0.0, 1.0}) {
-        const auto [denseTip, denseForce, denseLoad] = push(0.0, points);
-        const auto [prefixTip, prefixForce, prefixLoad] = push(1.0, points);
+    // whose prefix sums are those of the joints that move it, and with the
+    // loads pushed across the shaft (contact.sideNormals).
+    for (const auto& [points, side] : {std::pair{0.0, 0.0}, std::pair{1.0, 0.0}, std::pair{1.0, 1.0}}) {
+        const auto [denseTip, denseForce, denseLoad] = push(0.0, points, side);
+        const auto [prefixTip, prefixForce, prefixLoad] = push(1.0, points, side);
         EXPECT_GT(denseLoad, 0.5) << "the shaft is in contact";
         EXPECT_NEAR(prefixLoad, denseLoad, 1e-9) << points;
         EXPECT_LT((prefixTip - denseTip).norm(), 1e-9) << points;  // m; 5e-17 when measured
@@ -494,9 +496,12 @@ TEST(ProcedureLoop, SweepLimitsOutsideTheirRangeAreRefusedByName)
     prefix.contact.prefixSweeps = 2.0;
     ProcedureSettings points;
     points.contact.elementPoints = 4.0;
+    ProcedureSettings side;
+    side.contact.sideNormals = 2.0;
     for (const auto& [settings, name] :
          {std::pair{sweeps, "contact.couplingSweeps"}, std::pair{tolerance, "contact.sweepTolerance"},
-          std::pair{prefix, "contact.prefixSweeps"}, std::pair{points, "contact.elementPoints"}}) {
+          std::pair{prefix, "contact.prefixSweeps"}, std::pair{points, "contact.elementPoints"},
+          std::pair{side, "contact.sideNormals"}}) {
         try {
             ProcedureLoop loop(defaultColon(), settings);
             ADD_FAILURE() << name << " accepted";
