@@ -119,9 +119,8 @@ struct ContactParameters {
         0.0,
         1.0,
         "1: the wall pushes each contact point but the tip across the shaft: its load takes the wall's "
-        "normal "
-        "less the part along the scope's axis there (the wall's normal itself where that part leaves less "
-        "than 0.2 across); 0: along the wall's normal (procedure/ContactCoupling.h)",
+        "normal less the part along the scope's axis there (the wall's normal itself where that part "
+        "leaves less than 0.2 across); 0: along the wall's normal (procedure/ContactCoupling.h)",
         "model choice: 0 keeps the runs the README measured bit for bit. A shaft lies along the wall it "
         "touches, so the wall's push on it is across it (friction apart); where the colon is pleated on the "
         "shaft the sections' cylinders tilt against it and their normals pushed along it (README, known "
