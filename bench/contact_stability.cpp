@@ -13,7 +13,7 @@
 //
 //   contact_stability [--seconds S] [--seeds 0,1,2,3] [--relaxation 1,0.5,0.3] [--max-node-step M]
 //                     [--sweeps 30] [--operator expert|novice] [--prefix-sweeps 0|1]
-//                     [--element-points 0,1] [--side-normals 0,1]
+//                     [--element-points 0,1] [--side-normals 0,1] [--pleat-search 0,1]
 //
 // Seed 0 is the default colon; any other seed is a generated patient.
 
@@ -59,7 +59,7 @@ struct Outcome {
 
 Outcome runOperator(std::uint64_t seed, const procedure::OperatorStyle& style, double relaxation,
                     double maxNodeStep, double sweeps, double prefixSweeps, double elementPoints,
-                    double sideNormals, double seconds)
+                    double sideNormals, double pleatSearch, double seconds)
 {
     const bench::Patient patient = bench::patientFromSeed(seed);
     procedure::ProcedureSettings settings = patient.settings;
@@ -68,6 +68,7 @@ Outcome runOperator(std::uint64_t seed, const procedure::OperatorStyle& style, d
     settings.contact.prefixSweeps = prefixSweeps;
     settings.contact.elementPoints = elementPoints;
     settings.contact.sideNormals = sideNormals;
+    settings.contact.pleatSearch = pleatSearch;
     settings.scope.maxNodeStep = maxNodeStep;
     const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(patient.anatomy);
     procedure::ProcedureLoop loop(anatomy, settings);
@@ -118,6 +119,7 @@ int main(int argc, char** argv)
     double prefixSweeps = contact::ContactParameters{}.prefixSweeps;
     std::vector<double> elementPoints{contact::ContactParameters{}.elementPoints};
     std::vector<double> sideNormals{contact::ContactParameters{}.sideNormals};
+    std::vector<double> pleatSearch{contact::ContactParameters{}.pleatSearch};
     try {
         bench::forEachOption(argc, argv, [&](const std::string& flag, const std::string& value) {
             if (flag == "--seconds") {
@@ -141,6 +143,9 @@ int main(int argc, char** argv)
             } else if (flag == "--side-normals") {
                 const auto& spec = contact::ContactParameters::sideNormalsSpec;
                 sideNormals = bench::parseList(flag, value, spec.minValue, spec.maxValue);
+            } else if (flag == "--pleat-search") {
+                const auto& spec = contact::ContactParameters::pleatSearchSpec;
+                pleatSearch = bench::parseList(flag, value, spec.minValue, spec.maxValue);
             } else if (flag == "--operator") {
                 if (value != "expert" && value != "novice") {
                     throw std::invalid_argument("--operator = '" + value + "' is not one of expert, novice");
@@ -150,7 +155,7 @@ int main(int argc, char** argv)
                 throw std::invalid_argument(
                     "unknown option '" + flag +
                     "' (allowed: --seconds, --seeds, --relaxation, --max-node-step, --sweeps, --operator, "
-                    "--prefix-sweeps, --element-points, --side-normals)");
+                    "--prefix-sweeps, --element-points, --side-normals, --pleat-search)");
             }
         });
     } catch (const std::exception& error) {
@@ -163,41 +168,46 @@ int main(int argc, char** argv)
         "steps with the tip more than a scope diameter into the wall; guarded: steps with a chain solve "
         "refused by the step guard; us/step: wall-clock time of a loop step; nodes: mean nodes in the "
         "contact solve; capped: steps whose last solve stopped at the sweep cap with loads still changing, "
-        "and the mean change left (mN); points: contact.elementPoints; side: contact.sideNormals; handle_N, "
+        "and the mean change left (mN); points: contact.elementPoints; side: contact.sideNormals; pleat: "
+        "contact.pleatSearch; handle_N, "
         "wall_N: peak handle force "
         "and peak contact load on the wall; mesentery: peak strain; perforating: steps recorded so\n",
         novice ? "novice" : "expert", seconds, maxNodeStep, prefixSweeps);
-    std::printf("%-10s %-6s %-6s %-4s %-6s %10s %10s %12s %12s %9s %9s %7s %8s %10s %9s %9s %10s %11s\n",
-                "relaxation", "sweeps", "points", "side", "seed", "fast", "outside", "deepest_mm",
+    std::printf("%-10s %-6s %-6s %-4s %-5s %-6s %10s %10s %12s %12s %9s %9s %7s %8s %10s %9s %9s %10s %11s\n",
+                "relaxation", "sweeps", "points", "side", "pleat", "seed", "fast", "outside", "deepest_mm",
                 "furthest_m", "guarded", "us/step", "nodes", "capped", "left_mN", "handle_N", "wall_N",
                 "mesentery", "perforating");
     const procedure::OperatorStyle style = novice ? procedure::noviceStyle() : procedure::expertStyle();
-    for (const double side : sideNormals) {
-        for (const double points : elementPoints) {
-            for (const double sweeps : sweepCaps) {
-                for (const double relaxation : relaxations) {
-                    Outcome total;
-                    for (const std::uint64_t seed : seeds) {
-                        const Outcome o = runOperator(seed, style, relaxation, maxNodeStep, sweeps,
-                                                      prefixSweeps, points, side, seconds);
-                        const double steps = static_cast<double>(std::max(o.steps, 1L));
-                        std::printf(
-                            "%-10.2f %-6.0f %-6.0f %-4.0f %-6llu %10ld %10ld %12.1f %12.3f %9ld %9.0f %7.1f "
-                            "%7.1f%% %10.3f "
-                            "%9.1f %9.1f %10.3f %11ld\n",
-                            relaxation, sweeps, points, side, static_cast<unsigned long long>(seed),
-                            o.fastSteps, o.outside, o.deepest * 1e3, o.furthest, o.guarded,
-                            o.seconds / steps * 1e6, o.nodes / steps,
-                            100.0 * static_cast<double>(o.capped) / steps,
-                            o.capped > 0 ? o.cappedResidual / static_cast<double>(o.capped) * 1e3 : 0.0,
-                            o.handleForce, o.wallForce, o.mesentery, o.perforating);
-                        std::fflush(stdout);
-                        total.fastSteps += o.fastSteps;
-                        total.outside += o.outside;
-                        total.deepest = std::max(total.deepest, o.deepest);
+    for (const double pleat : pleatSearch) {
+        for (const double side : sideNormals) {
+            for (const double points : elementPoints) {
+                for (const double sweeps : sweepCaps) {
+                    for (const double relaxation : relaxations) {
+                        Outcome total;
+                        for (const std::uint64_t seed : seeds) {
+                            const Outcome o = runOperator(seed, style, relaxation, maxNodeStep, sweeps,
+                                                          prefixSweeps, points, side, pleat, seconds);
+                            const double steps = static_cast<double>(std::max(o.steps, 1L));
+                            std::printf("%-10.2f %-6.0f %-6.0f %-4.0f %-5.0f %-6llu %10ld %10ld %12.1f "
+                                        "%12.3f %9ld %9.0f %7.1f "
+                                        "%7.1f%% %10.3f "
+                                        "%9.1f %9.1f %10.3f %11ld\n",
+                                        relaxation, sweeps, points, side, pleat,
+                                        static_cast<unsigned long long>(seed), o.fastSteps, o.outside,
+                                        o.deepest * 1e3, o.furthest, o.guarded, o.seconds / steps * 1e6,
+                                        o.nodes / steps, 100.0 * static_cast<double>(o.capped) / steps,
+                                        o.capped > 0 ? o.cappedResidual / static_cast<double>(o.capped) * 1e3
+                                                     : 0.0,
+                                        o.handleForce, o.wallForce, o.mesentery, o.perforating);
+                            std::fflush(stdout);
+                            total.fastSteps += o.fastSteps;
+                            total.outside += o.outside;
+                            total.deepest = std::max(total.deepest, o.deepest);
+                        }
+                        std::printf("%-10.2f %-6.0f %-6.0f %-4.0f %-5.0f %-6s %10ld %10ld %12.1f\n",
+                                    relaxation, sweeps, points, side, pleat, "all", total.fastSteps,
+                                    total.outside, total.deepest * 1e3);
                     }
-                    std::printf("%-10.2f %-6.0f %-6.0f %-4.0f %-6s %10ld %10ld %12.1f\n", relaxation, sweeps,
-                                points, side, "all", total.fastSteps, total.outside, total.deepest * 1e3);
                 }
             }
         }

@@ -48,8 +48,10 @@ const std::vector<LumenNodeContact>& LumenContact::compute(const Eigen::Matrix3X
     m_contacts.resize(n);
     const int lastRing = m_tube.numRings() - 1;
     int neighbour = 0;
+    const bool pleats = std::lround(m_parameters.pleatSearch) != 0;
     for (size_t i = 0; i < n; ++i) {
         const Eigen::Vector3d p = scope.col(static_cast<Eigen::Index>(i));
+        const Eigen::Vector3d base = i > 0 ? Eigen::Vector3d(scope.col(static_cast<Eigen::Index>(i) - 1)) : p;
         LumenNodeContact& c = m_contacts[i];
         const long j = static_cast<long>(i) - (history ? addedAtBase : 0);
         const bool known = history && j >= 0 && j < static_cast<long>(m_previousRing.size());
@@ -58,7 +60,8 @@ const std::vector<LumenNodeContact>& LumenContact::compute(const Eigen::Matrix3X
         LumenWallSample w = m_tube.wallAt(p, c.station);
         LumenStation held;
         if (w.distance > w.wallRadius && !c.station.beyondEnd && !c.station.beforeStart &&
-            m_tube.findHolding(p, c.station.ring, neighbour, kHeldWindow, held)) {
+            m_tube.findHolding(p, c.station.ring, neighbour, kHeldWindow, held,
+                               i > 0 && pleats ? &base : nullptr, radius)) {
             // The walk was held at a fold: on towards the neighbour's
             // section, a section's wall holds the node.
             c.station = held;

@@ -88,9 +88,14 @@ public:
     /// the base node): where the colon is folded back on itself the walk,
     /// which moves only while the centre polyline comes closer, is held at
     /// the fold's far leg, and the node would be pushed towards the wrong
-    /// part of the colon. A section away from the neighbour is never taken,
-    /// so a node pushed through its wall into a neighbouring loop is still
-    /// pushed back the way it came. `wallMoved` false: `wall` is the one of the last call
+    /// part of the colon. A section away from the neighbour is taken only
+    /// with contact.pleatSearch 1, and only where the shaft's segment from
+    /// the neighbour to the node passes through every ring in between within
+    /// the scope's radius of its wall (LumenTube::passesThrough): the colon
+    /// pleated on the shaft, its rings packed and tilted so that the walk is
+    /// held on a fold of the pleat. A node pushed through its wall into a
+    /// neighbouring loop (the segment leaves the lumen) is still pushed back
+    /// the way it came. `wallMoved` false: `wall` is the one of the last call
     /// and the tube's rings are not measured again.
     const std::vector<LumenNodeContact>& compute(const Eigen::Matrix3Xd& scope,
                                                  const Eigen::Matrix3Xd& scopeVelocities, double radius,

@@ -180,18 +180,51 @@ bool LumenTube::holds(const Eigen::Vector3d& p, int ring, LumenStation& at) cons
     return w.distance < w.wallRadius;
 }
 
-bool LumenTube::findHolding(const Eigen::Vector3d& p, int from, int towards, int window,
-                            LumenStation& at) const
+bool LumenTube::findHolding(const Eigen::Vector3d& p, int from, int towards, int window, LumenStation& at,
+                            const Eigen::Vector3d* neighbour, double slack) const
 {
     const int gap = std::abs(from - towards);
     for (int offset = 1; offset <= window; ++offset) {
         for (const int ring : {from - offset, from + offset}) {
-            if (std::abs(ring - towards) < gap && holds(p, ring, at)) {
+            if (!holds(p, ring, at)) {
+                continue;
+            }
+            if (std::abs(ring - towards) < gap ||
+                (neighbour != nullptr && passesThrough(*neighbour, p, towards, ring, slack))) {
                 return true;
             }
         }
     }
     return false;
+}
+
+bool LumenTube::passesThrough(const Eigen::Vector3d& q, const Eigen::Vector3d& p, int from, int to,
+                              double slack) const
+{
+    const int first = std::min(from, to) + 1;
+    const int last = std::max(from, to);
+    for (int ring = std::max(first, 0); ring <= std::min(last, m_numRings - 1); ++ring) {
+        const double hq = height(ring, q);
+        const double hp = height(ring, p);
+        if ((hq > 0.0 && hp > 0.0) || (hq < 0.0 && hp < 0.0)) {
+            return false;  // the segment does not reach the ring's plane
+        }
+        const double s = hq != hp ? hq / (hq - hp) : 0.0;
+        Eigen::Vector3d across = q + s * (p - q) - centre(ring);
+        across -= across.dot(axis(ring)) * axis(ring);
+        const double distance = across.norm();
+        if (distance == 0.0) {
+            continue;  // through the centre
+        }
+        double radius = 0.0;
+        int edge = 0;
+        double fraction = 0.0;
+        rayToRing(ring, across / distance, radius, edge, fraction);
+        if (distance > radius + slack) {
+            return false;  // it crosses the plane outside the wall
+        }
+    }
+    return true;
 }
 
 void LumenTube::rayToRing(int ring, const Eigen::Vector3d& e, double& radius, int& edge,

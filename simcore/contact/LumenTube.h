@@ -97,8 +97,24 @@ public:
     /// wall holds `p` and that lies nearer to section `towards` than `from`
     /// does; false if there is none. For a point whose walk was held at a
     /// fold (see LumenContact.h).
+    ///
+    /// With `neighbour` (the base-side point, at section `towards`), a
+    /// section away from `towards` is also taken when the segment from the
+    /// neighbour to `p` passes through every ring between the two sections
+    /// within `slack` of its wall (passesThrough()): the colon pleated on the
+    /// shaft, its rings packed closer than the points and tilted so that the
+    /// walk is held on a fold of the pleat, not a point pushed through the
+    /// wall into a neighbouring loop (the segment would leave the lumen).
     [[nodiscard]] bool findHolding(const Eigen::Vector3d& p, int from, int towards, int window,
-                                   LumenStation& at) const;
+                                   LumenStation& at, const Eigen::Vector3d* neighbour = nullptr,
+                                   double slack = 0.0) const;
+    /// Whether the segment from `q` to `p` crosses the plane of every ring
+    /// between sections `from` and `to` (rings from + 1 .. to, or to + 1 ..
+    /// from) no further from its centre than its wall along the same
+    /// direction plus `slack`, m: a path inside the lumen from one section
+    /// to the other.
+    [[nodiscard]] bool passesThrough(const Eigen::Vector3d& q, const Eigen::Vector3d& p, int from, int to,
+                                     double slack) const;
     /// The wall seen from `p` at `station`, radially.
     [[nodiscard]] LumenWallSample wallAt(const Eigen::Vector3d& p, const LumenStation& station) const;
     /// Where a station lies along the colon at rest (material coordinate), m:

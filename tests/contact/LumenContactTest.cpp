@@ -273,18 +273,128 @@ TEST(LumenContact, ANodeHeldAtAFoldFindsTheSectionThatHoldsIt)
     EXPECT_GE(tip.depth, kScopeRadius - radius - 1e-12);
     EXPECT_LE(tip.depth, kScopeRadius - inscribed + 1e-12);
 
-    // Through the first leg's wall, 3 mm into the middle leg's lumen.
-    LumenContact pushed(colon(), ContactParameters{});
-    scope.col(1) = midpoint(6);
-    pushed.compute(scope, velocities, kScopeRadius, wall, still);
-    ASSERT_EQ(pushed.contacts()[1].station.ring, 6);
-    scope.col(1) = midpoint(6) + Eigen::Vector3d(0.0, legs - 0.003, 0.0);
-    pushed.compute(scope, velocities, kScopeRadius, wall, still, 0);
-    const LumenNodeContact& through = pushed.contacts()[1];
-    EXPECT_EQ(through.station.ring, 6) << "moved on into the middle leg";
-    EXPECT_GE(through.depth, legs - 0.003 + kScopeRadius - radius - 1e-12);
-    EXPECT_LE(through.depth, legs - 0.003 + kScopeRadius - inscribed + 1e-12);
-    EXPECT_LT(through.normal.y(), -0.99) << "pushed back towards the first leg's axis";
+    // Through the first leg's wall, 3 mm into the middle leg's lumen, with
+    // and without the pleat search (the segment from the neighbour leaves
+    // the lumen: it crosses no ring of the middle leg).
+    for (const double pleatSearch : {0.0, 1.0}) {
+        ContactParameters parameters;
+        parameters.pleatSearch = pleatSearch;
+        LumenContact pushed(colon(), parameters);
+        scope.col(1) = midpoint(6);
+        pushed.compute(scope, velocities, kScopeRadius, wall, still);
+        ASSERT_EQ(pushed.contacts()[1].station.ring, 6);
+        scope.col(1) = midpoint(6) + Eigen::Vector3d(0.0, legs - 0.003, 0.0);
+        pushed.compute(scope, velocities, kScopeRadius, wall, still, 0);
+        const LumenNodeContact& through = pushed.contacts()[1];
+        EXPECT_EQ(through.station.ring, 6) << "moved on into the middle leg, pleat search " << pleatSearch;
+        EXPECT_GE(through.depth, legs - 0.003 + kScopeRadius - radius - 1e-12);
+        EXPECT_LE(through.depth, legs - 0.003 + kScopeRadius - inscribed + 1e-12);
+        EXPECT_LT(through.normal.y(), -0.99) << "pushed back towards the first leg's axis";
+    }
+}
+
+// The colon pleated on the shaft, as the expert's shortening gathers the
+// sigmoid: rings 11-30 packed 2 mm apart along the shaft, the first five of
+// them tilted 80 degrees (folds of the pleat lying along the shaft), so that
+// across the centre line's axis their sections are flattened to 1.6 mm. A
+// point 4 mm beside the shaft's line in section 18 lies inside that
+// section, 18 mm on from its base-side neighbour in section 9; the walk from
+// the neighbour's section (four sections at most) stops in the tilted rings
+// with the point outside their wall, and no section nearer the neighbour
+// holds it (the seed-1 swing: points measured 30-58 mm into sections they
+// did not lie in, pushed along the shaft). The shaft's segment from the
+// neighbour passes through every ring in between within the scope's radius
+// of its wall, so with contact.pleatSearch 1 the section that holds the
+// point is taken although it lies away from the neighbour: the point is
+// measured from that section's axis, its side on the wall 4 mm away. A
+// point pushed through the wall into a neighbouring loop is still pushed
+// back (ANodeHeldAtAFoldFindsTheSectionThatHoldsIt): that segment leaves
+// the lumen.
+TEST(LumenContact, APointInAPleatIsFoundThroughThePackedRings)
+{
+    LumenTube tube = restTube();
+    const int perRing = tube.nodesPerRing();
+    const double spacing = 0.014;  // m between ring centres outside the pleat
+    const double packed = 0.002;   // m between ring centres in the pleat
+    const double radius = 0.009;   // m
+    const double tilt = 80.0 * std::numbers::pi / 180.0;
+    const int first = 11;
+    const int last = 30;
+    const auto centreOf = [&](int ring) {
+        const double start = (first - 1) * spacing;
+        if (ring < first) {
+            return Eigen::Vector3d(ring * spacing, 0.0, 0.0);
+        }
+        if (ring <= last) {
+            return Eigen::Vector3d(start + (ring - first + 1) * packed, 0.0, 0.0);
+        }
+        return Eigen::Vector3d(start + (last - first + 1) * packed + (ring - last) * spacing, 0.0, 0.0);
+    };
+    Eigen::Matrix3Xd wall(3, tube.numRings() * perRing + 1);
+    for (int ring = 0; ring < tube.numRings(); ++ring) {
+        const double turn = ring >= first && ring < first + 5 ? tilt : 0.0;
+        const Eigen::Vector3d across(std::sin(turn), std::cos(turn), 0.0);
+        for (int j = 0; j < perRing; ++j) {
+            const double angle = 2.0 * std::numbers::pi * j / perRing;
+            wall.col(ring * perRing + j) =
+                centreOf(ring) +
+                radius * (std::cos(angle) * across + std::sin(angle) * Eigen::Vector3d::UnitZ());
+        }
+    }
+    wall.col(tube.apex()) = centreOf(tube.numRings()) + Eigen::Vector3d(spacing, 0.0, 0.0);
+    tube.update(wall);
+    const Eigen::Matrix3Xd still = Eigen::Matrix3Xd::Zero(3, wall.cols());
+    const Eigen::Matrix3Xd velocities = Eigen::Matrix3Xd::Zero(3, 11);
+    constexpr double kScopeRadius = 0.0065;  // m
+
+    const Eigen::Vector3d base(9.9 * spacing, 0.0, 0.0);  // section 9
+    const Eigen::Vector3d p(0.5 * (centreOf(18).x() + centreOf(19).x()), 0.004, 0.0);
+    ASSERT_NEAR((p - base).norm(), 0.0188, 1e-4);
+    LumenStation inside;
+    ASSERT_TRUE(tube.holds(p, 18, inside));
+    const LumenStation held = tube.locate(p, 9, 4);
+    const LumenWallSample heldWall = tube.wallAt(p, held);
+    ASSERT_GT(heldWall.distance, heldWall.wallRadius) << "held at section " << held.ring;
+    ASSERT_LT(held.ring, 18);
+    LumenStation found;
+    ASSERT_FALSE(tube.findHolding(p, held.ring, 9, 16, found)) << "found at section " << found.ring;
+    EXPECT_TRUE(tube.passesThrough(base, p, 9, 18, kScopeRadius));
+
+    // The shaft on the axis from the anus (each point searches around its
+    // base-side neighbour's section), its last two points the neighbour and p.
+    ContactParameters pleats;
+    pleats.pleatSearch = 1.0;
+    LumenContact contact(colon(), pleats);
+    LumenContact without(colon(), ContactParameters{});
+    Eigen::Matrix3Xd scope(3, 11);
+    for (int k = 0; k < 9; ++k) {
+        scope.col(k) = Eigen::Vector3d((k + 0.5) * spacing, 0.0, 0.0);
+    }
+    scope.col(9) = base;
+    scope.col(10) = p;
+    const auto& contacts = contact.compute(scope, velocities, kScopeRadius, wall, still);
+    ASSERT_EQ(contacts[9].station.ring, 9);
+    const LumenNodeContact& c = contacts[10];
+    EXPECT_GE(c.station.ring, 16);
+    EXPECT_LE(c.station.ring, 19);
+    // Measured from its own section's axis, 4 mm away: the scope's side
+    // meets the wall (a polygon of P nodes, between R cos(pi / P) and R from
+    // the axis), pushed back across the shaft, not along it.
+    const double inscribed = radius * std::cos(std::numbers::pi / perRing);
+    EXPECT_GE(c.depth, 0.004 + kScopeRadius - radius - 1e-12);
+    EXPECT_LE(c.depth, 0.004 + kScopeRadius - inscribed + 1e-12);
+    EXPECT_LT(c.normal.y(), -0.99);
+    // Without the pleat search (contact.pleatSearch 0) it stays where the
+    // walk held it, measured much deeper.
+    const LumenNodeContact& h = without.compute(scope, velocities, kScopeRadius, wall, still)[10];
+    EXPECT_EQ(h.station.ring, held.ring);
+    EXPECT_NEAR(h.depth, heldWall.distance + kScopeRadius - heldWall.wallRadius, 1e-12);
+    EXPECT_GT(h.depth, c.depth + 0.005);
+
+    // 20 mm beside the shaft's line the segment from the neighbour crosses
+    // the packed rings' planes outside their wall (9 mm) and the scope's radius.
+    const Eigen::Vector3d beside = p + Eigen::Vector3d(0.0, 0.0, 0.020);
+    EXPECT_FALSE(tube.passesThrough(base, beside, 9, 18, kScopeRadius));
 }
 
 // The closed cecal end: the contact compute() gives a node at `p` at the

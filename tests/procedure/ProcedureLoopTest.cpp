@@ -498,10 +498,12 @@ TEST(ProcedureLoop, SweepLimitsOutsideTheirRangeAreRefusedByName)
     points.contact.elementPoints = 4.0;
     ProcedureSettings side;
     side.contact.sideNormals = 2.0;
+    ProcedureSettings pleats;
+    pleats.contact.pleatSearch = -1.0;
     for (const auto& [settings, name] :
          {std::pair{sweeps, "contact.couplingSweeps"}, std::pair{tolerance, "contact.sweepTolerance"},
           std::pair{prefix, "contact.prefixSweeps"}, std::pair{points, "contact.elementPoints"},
-          std::pair{side, "contact.sideNormals"}}) {
+          std::pair{side, "contact.sideNormals"}, std::pair{pleats, "contact.pleatSearch"}}) {
         try {
             ProcedureLoop loop(defaultColon(), settings);
             ADD_FAILURE() << name << " accepted";
