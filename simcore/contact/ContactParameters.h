@@ -138,7 +138,7 @@ struct ContactParameters {
         "between within the scope's radius of its wall (contact/LumenTube.h passesThrough); 0: only sections "
         "towards the neighbour's",
         "model choice: 0 keeps the runs the README measured bit for bit. Where the colon is pleated on the "
-        "shaft, consecutive points 10 mm apart lie 7-15 sections apart in tilted, packed rings, and the walk "
+        "shaft, consecutive points 10 mm apart lie 5-14 sections apart in tilted, packed rings, and the walk "
         "is held with the point outside a flattened section it does not lie in (README, known limits; "
         "build/bench/contact_stability --pleat-search)"};
 
