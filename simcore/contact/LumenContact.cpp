@@ -51,21 +51,26 @@ const std::vector<LumenNodeContact>& LumenContact::compute(const Eigen::Matrix3X
     const bool pleats = std::lround(m_parameters.pleatSearch) != 0;
     for (size_t i = 0; i < n; ++i) {
         const Eigen::Vector3d p = scope.col(static_cast<Eigen::Index>(i));
-        const Eigen::Vector3d base = i > 0 ? Eigen::Vector3d(scope.col(static_cast<Eigen::Index>(i) - 1)) : p;
         LumenNodeContact& c = m_contacts[i];
         const long j = static_cast<long>(i) - (history ? addedAtBase : 0);
         const bool known = history && j >= 0 && j < static_cast<long>(m_previousRing.size());
         c.station = known ? m_tube.locate(p, m_previousRing[static_cast<size_t>(j)], kHistoryWindow)
                           : m_tube.locate(p, neighbour, kNeighbourWindow);
         LumenWallSample w = m_tube.wallAt(p, c.station);
-        LumenStation held;
-        if (w.distance > w.wallRadius && !c.station.beyondEnd && !c.station.beforeStart &&
-            m_tube.findHolding(p, c.station.ring, neighbour, kHeldWindow, held,
-                               i > 0 && pleats ? &base : nullptr, radius)) {
+        if (w.distance > w.wallRadius && !c.station.beyondEnd && !c.station.beforeStart) {
             // The walk was held at a fold: on towards the neighbour's
-            // section, a section's wall holds the node.
-            c.station = held;
-            w = m_tube.wallAt(p, c.station);
+            // section (or, searching through pleats, on the far side along
+            // the shaft's path from the neighbour), a section's wall may
+            // hold the node.
+            const bool throughPleats = pleats && i > 0;
+            const Eigen::Vector3d base =
+                throughPleats ? Eigen::Vector3d(scope.col(static_cast<Eigen::Index>(i) - 1)) : p;
+            LumenStation held;
+            if (m_tube.findHolding(p, c.station.ring, neighbour, kHeldWindow, held,
+                                   throughPleats ? &base : nullptr, radius)) {
+                c.station = held;
+                w = m_tube.wallAt(p, c.station);
+            }
         }
         neighbour = c.station.ring;
         c.depth = w.distance + radius - w.wallRadius;

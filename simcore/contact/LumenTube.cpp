@@ -186,11 +186,11 @@ bool LumenTube::findHolding(const Eigen::Vector3d& p, int from, int towards, int
     const int gap = std::abs(from - towards);
     for (int offset = 1; offset <= window; ++offset) {
         for (const int ring : {from - offset, from + offset}) {
-            if (!holds(p, ring, at)) {
+            const bool towardsNeighbour = std::abs(ring - towards) < gap;
+            if ((!towardsNeighbour && neighbour == nullptr) || !holds(p, ring, at)) {
                 continue;
             }
-            if (std::abs(ring - towards) < gap ||
-                (neighbour != nullptr && passesThrough(*neighbour, p, towards, ring, slack))) {
+            if (towardsNeighbour || passesThrough(*neighbour, p, towards, ring, slack)) {
                 return true;
             }
         }

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numbers>
 #include <string>
 
@@ -28,6 +29,29 @@ LumenTube restTube()
     LumenTube tube(colon());
     tube.update(colon().physicsMesh.vertices);
     return tube;
+}
+
+// Wall nodes in `tube`'s layout: ring i's nodes on a circle of `radius`
+// about centreOf(i), in the plane of z and (sin t, cos t, 0) with t =
+// tiltOf(i) (rad; none: the y-z plane), and the apex at `apex`.
+Eigen::Matrix3Xd ringWall(const LumenTube& tube, const std::function<Eigen::Vector3d(int)>& centreOf,
+                          double radius, const Eigen::Vector3d& apex,
+                          const std::function<double(int)>& tiltOf = {})
+{
+    const int perRing = tube.nodesPerRing();
+    Eigen::Matrix3Xd wall(3, tube.numRings() * perRing + 1);
+    for (int ring = 0; ring < tube.numRings(); ++ring) {
+        const double turn = tiltOf ? tiltOf(ring) : 0.0;
+        const Eigen::Vector3d across(std::sin(turn), std::cos(turn), 0.0);
+        for (int j = 0; j < perRing; ++j) {
+            const double angle = 2.0 * std::numbers::pi * j / perRing;
+            wall.col(ring * perRing + j) =
+                centreOf(ring) +
+                radius * (std::cos(angle) * across + std::sin(angle) * Eigen::Vector3d::UnitZ());
+        }
+    }
+    wall.col(tube.apex()) = apex;
+    return wall;
 }
 
 // Every ring centre lies in its own section, found by walking from the anus,
@@ -61,25 +85,17 @@ TEST(LumenTube, RingCentresAreFoundInTheirSectionsInOrder)
 TEST(LumenTube, APointBesideAFoldStaysInItsOwnLegOfTheColon)
 {
     LumenTube tube = restTube();
-    const int perRing = tube.nodesPerRing();
     const int fold = 40;           // the last ring of the first leg
     const double spacing = 0.014;  // m between ring centres
     const double legs = 0.020;     // m between the legs' axes
     const double radius = 0.006;   // m, a flattened lumen
-    Eigen::Matrix3Xd wall(3, tube.numRings() * perRing + 1);
-    for (int ring = 0; ring < tube.numRings(); ++ring) {
+    const auto centreOf = [&](int ring) {
         // Out along +x to the fold, then back along -x, 20 mm to the side.
         const bool back = ring > fold;
         const double x = back ? (2 * fold + 1 - ring) * spacing : ring * spacing;
-        const Eigen::Vector3d centre(x, back ? legs : 0.0, 0.0);
-        for (int j = 0; j < perRing; ++j) {
-            const double angle = 2.0 * std::numbers::pi * j / perRing;
-            wall.col(ring * perRing + j) =
-                centre + radius * Eigen::Vector3d(0.0, std::cos(angle), std::sin(angle));
-        }
-    }
-    wall.col(tube.apex()) = Eigen::Vector3d(-0.05, legs, 0.0);
-    tube.update(wall);
+        return Eigen::Vector3d(x, back ? legs : 0.0, 0.0);
+    };
+    tube.update(ringWall(tube, centreOf, radius, Eigen::Vector3d(-0.05, legs, 0.0)));
 
     const int own = fold - 2;  // section (38, 39) of the first leg
     const Eigen::Vector3d p((own + 0.5) * spacing, 0.012, 0.0);
@@ -229,15 +245,8 @@ TEST(LumenContact, ANodeHeldAtAFoldFindsTheSectionThatHoldsIt)
         }
         return Eigen::Vector3d((ring - 20) * spacing, 2.0 * legs, 0.0);
     };
-    Eigen::Matrix3Xd wall(3, tube.numRings() * perRing + 1);
-    for (int ring = 0; ring < tube.numRings(); ++ring) {
-        for (int j = 0; j < perRing; ++j) {
-            const double angle = 2.0 * std::numbers::pi * j / perRing;
-            wall.col(ring * perRing + j) =
-                centreOf(ring) + radius * Eigen::Vector3d(0.0, std::cos(angle), std::sin(angle));
-        }
-    }
-    wall.col(tube.apex()) = centreOf(tube.numRings()) + Eigen::Vector3d(spacing, 0.0, 0.0);
+    const Eigen::Matrix3Xd wall =
+        ringWall(tube, centreOf, radius, centreOf(tube.numRings()) + Eigen::Vector3d(spacing, 0.0, 0.0));
     tube.update(wall);
     const Eigen::Matrix3Xd still = Eigen::Matrix3Xd::Zero(3, wall.cols());
     const Eigen::Matrix3Xd velocities = Eigen::Matrix3Xd::Zero(3, 2);
@@ -330,18 +339,9 @@ TEST(LumenContact, APointInAPleatIsFoundThroughThePackedRings)
         }
         return Eigen::Vector3d(start + (last - first + 1) * packed + (ring - last) * spacing, 0.0, 0.0);
     };
-    Eigen::Matrix3Xd wall(3, tube.numRings() * perRing + 1);
-    for (int ring = 0; ring < tube.numRings(); ++ring) {
-        const double turn = ring >= first && ring < first + 5 ? tilt : 0.0;
-        const Eigen::Vector3d across(std::sin(turn), std::cos(turn), 0.0);
-        for (int j = 0; j < perRing; ++j) {
-            const double angle = 2.0 * std::numbers::pi * j / perRing;
-            wall.col(ring * perRing + j) =
-                centreOf(ring) +
-                radius * (std::cos(angle) * across + std::sin(angle) * Eigen::Vector3d::UnitZ());
-        }
-    }
-    wall.col(tube.apex()) = centreOf(tube.numRings()) + Eigen::Vector3d(spacing, 0.0, 0.0);
+    const Eigen::Matrix3Xd wall =
+        ringWall(tube, centreOf, radius, centreOf(tube.numRings()) + Eigen::Vector3d(spacing, 0.0, 0.0),
+                 [&](int ring) { return ring >= first && ring < first + 5 ? tilt : 0.0; });
     tube.update(wall);
     const Eigen::Matrix3Xd still = Eigen::Matrix3Xd::Zero(3, wall.cols());
     const Eigen::Matrix3Xd velocities = Eigen::Matrix3Xd::Zero(3, 11);
