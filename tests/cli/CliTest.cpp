@@ -93,6 +93,34 @@ TEST(Cli, DemoRunsAndReportsJson)
     EXPECT_LT(summary["max_displacement_m"].get<double>(), 0.1);
 }
 
+// The run's summary for a person: each figure rounded to what it means
+// (a simulated time to the millisecond, times to 10 ms, newtons and the
+// discomfort scale to a tenth), not every binary digit of a sum of steps;
+// the --json summary keeps every digit.
+TEST(Cli, RunSummaryPrintsRoundedFigures)
+{
+    const std::filesystem::path dir = tempDir();
+    const Result r =
+        run("run --default --operator novice --max-time 1 --out " + (dir / "run").string(), true);
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("procedure: 1.000 s simulated, operator novice\n"), std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find("time to cecum: not reached\n"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("loops: {}, looped 0.00 s\n"), std::string::npos) << r.output;
+    const std::size_t force = r.output.find("peak handle force: ");
+    ASSERT_NE(force, std::string::npos) << r.output;
+    std::istringstream line(r.output.substr(force + 19));
+    std::string newtons;
+    std::string unit;
+    line >> newtons >> unit;
+    EXPECT_EQ(unit, "N;") << r.output;
+    const std::size_t point = newtons.find('.');
+    ASSERT_NE(point, std::string::npos) << newtons;
+    EXPECT_EQ(newtons.size() - point, 2U) << "one decimal: " << newtons;
+    EXPECT_NE(r.output.find(" / 10\n"), std::string::npos) << r.output;
+    std::filesystem::remove_all(dir);
+}
+
 TEST(Cli, ParameterDocumentationIsUpToDate)
 {
     const Result r = run("params --markdown");

@@ -27,6 +27,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
 #include <map>
 #include <sstream>
@@ -210,16 +211,23 @@ int runProcedure(std::span<char* const> args)
     if (line.has("--json")) {
         std::cout << summary.dump(2) << '\n';
     } else {
-        std::cout << "procedure: " << loop.time() << " s simulated, operator " << *operatorName << '\n'
+        // Rounded for a person to read (the --json summary keeps every digit).
+        const auto fixed = [](double value, int digits) {
+            std::ostringstream text;
+            text << std::fixed << std::setprecision(digits) << value;
+            return text.str();
+        };
+        std::cout << "procedure: " << fixed(loop.time(), 3) << " s simulated, operator " << *operatorName
+                  << '\n'
                   << "time to cecum: "
                   << (summary["time_to_cecum_s"].is_null()
                           ? std::string("not reached")
-                          : std::to_string(summary["time_to_cecum_s"].get<double>()) + " s")
+                          : fixed(summary["time_to_cecum_s"].get<double>(), 2) + " s")
                   << '\n'
-                  << "loops: " << summary["loops_by_type"].dump() << ", looped " << summary["looped_time_s"]
-                  << " s\n"
-                  << "peak handle force: " << summary["peak_handle_force_N"] << " N; peak discomfort "
-                  << summary["peak_discomfort"] << " / 10\n"
+                  << "loops: " << summary["loops_by_type"].dump() << ", looped "
+                  << fixed(summary["looped_time_s"].get<double>(), 2) << " s\n"
+                  << "peak handle force: " << fixed(summary["peak_handle_force_N"].get<double>(), 1)
+                  << " N; peak discomfort " << fixed(summary["peak_discomfort"].get<double>(), 1) << " / 10\n"
                   << "written: " << (dir / "session.trace").string()
                   << ", samples.csv, events.csv, recording.txt\n"
                   << storedLine;
