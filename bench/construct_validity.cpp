@@ -8,13 +8,17 @@
 // step guard refused (Colonoscope::step). Then, per metric, on how many patients the
 // expert did better than the novice.
 //
-//   construct_validity [--seconds S] [--seeds 1,2,3,...]
+//   construct_validity [--seconds S] [--seeds 1,2,3,...] [--element-points 0|1]
+//                      [--side-normals 0|1] [--pleat-search 0|1]
 //
-// Seed 0 is the default colon; any other seed is a generated patient.
+// Seed 0 is the default colon; any other seed is a generated patient. The
+// three contact options (contact.elementPoints, contact.sideNormals,
+// contact.pleatSearch; off by default) apply to both operators' runs.
 
 #include "bench/ListArgument.h"
 #include "bench/PatientFromSeed.h"
 #include "scoring/SessionMetrics.h"
+#include "simcore/contact/ContactParameters.h"
 #include "simcore/geometry/ProceduralColon.h"
 #include "simcore/procedure/Operator.h"
 #include "simcore/procedure/ProcedureLoop.h"
@@ -43,10 +47,21 @@ struct Run {
     long guarded = 0;        ///< steps with a chain solve refused by the step guard
 };
 
-Run runOperator(std::uint64_t seed, const procedure::OperatorStyle& style, double seconds)
+/// The contact options both operators run with (ContactParameters.h).
+struct ContactOptions {
+    double elementPoints = 0.0;
+    double sideNormals = 0.0;
+    double pleatSearch = 0.0;
+};
+
+Run runOperator(std::uint64_t seed, const procedure::OperatorStyle& style, double seconds,
+                const ContactOptions& options)
 {
     const bench::Patient patient = bench::patientFromSeed(seed);
-    const procedure::ProcedureSettings& settings = patient.settings;
+    procedure::ProcedureSettings settings = patient.settings;
+    settings.contact.elementPoints = options.elementPoints;
+    settings.contact.sideNormals = options.sideNormals;
+    settings.contact.pleatSearch = options.pleatSearch;
     const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(patient.anatomy);
     procedure::ProcedureLoop loop(anatomy, settings);
     procedure::ScriptedOperator driver(style);
@@ -91,14 +106,26 @@ int main(int argc, char** argv)
 {
     double seconds = 60.0;
     std::vector<std::uint64_t> seeds{1, 2, 3, 4, 5, 6, 7, 8, 9, 10};
+    ContactOptions options;
     try {
         bench::forEachOption(argc, argv, [&](const std::string& flag, const std::string& value) {
             if (flag == "--seconds") {
                 seconds = bench::parseList(flag, value, 0.001, 3600.0).front();
             } else if (flag == "--seeds") {
                 seeds = bench::parseSeeds(flag, value);
+            } else if (flag == "--element-points") {
+                const auto& spec = contact::ContactParameters::elementPointsSpec;
+                options.elementPoints = bench::parseList(flag, value, spec.minValue, spec.maxValue).front();
+            } else if (flag == "--side-normals") {
+                const auto& spec = contact::ContactParameters::sideNormalsSpec;
+                options.sideNormals = bench::parseList(flag, value, spec.minValue, spec.maxValue).front();
+            } else if (flag == "--pleat-search") {
+                const auto& spec = contact::ContactParameters::pleatSearchSpec;
+                options.pleatSearch = bench::parseList(flag, value, spec.minValue, spec.maxValue).front();
             } else {
-                throw std::invalid_argument("unknown option '" + flag + "' (allowed: --seconds, --seeds)");
+                throw std::invalid_argument("unknown option '" + flag +
+                                            "' (allowed: --seconds, --seeds, --element-points, "
+                                            "--side-normals, --pleat-search)");
             }
         });
     } catch (const std::exception& error) {
@@ -108,17 +135,19 @@ int main(int argc, char** argv)
     std::printf(
         "expert and novice, %.1f s per run; cecum: time to cecum (s, - when not reached); furthest: "
         "tip along the colon / colon length (m); outside: steps with the tip more than a scope diameter "
-        "into the wall; guarded: steps with a chain solve refused by the scope's step guard\n",
-        seconds);
+        "into the wall; guarded: steps with a chain solve refused by the scope's step guard; contact "
+        "options: "
+        "elementPoints %g, sideNormals %g, pleatSearch %g\n",
+        seconds, options.elementPoints, options.sideNormals, options.pleatSearch);
     std::printf("%-7s %-6s %10s %17s %9s %6s %6s %10s %9s %9s\n", "who", "seed", "cecum_s", "furthest_m",
                 "looped_s", "loops", "alpha", "peak_F_N", "outside", "guarded");
     int fasterToCecum = 0;
     int lessLooped = 0;
     int lessForce = 0;
     for (const std::uint64_t seed : seeds) {
-        const Run expert = runOperator(seed, procedure::expertStyle(), seconds);
+        const Run expert = runOperator(seed, procedure::expertStyle(), seconds, options);
         printRun("expert", seed, expert);
-        const Run novice = runOperator(seed, procedure::noviceStyle(), seconds);
+        const Run novice = runOperator(seed, procedure::noviceStyle(), seconds, options);
         printRun("novice", seed, novice);
         // Faster to the cecum: the expert reached it, and the novice did not or later.
         const bool expertFaster = expert.timeToCecum >= 0.0 &&
