@@ -135,9 +135,8 @@ int main(int argc, char** argv)
     std::printf(
         "expert and novice, %.1f s per run; cecum: time to cecum (s, - when not reached); furthest: "
         "tip along the colon / colon length (m); outside: steps with the tip more than a scope diameter "
-        "into the wall; guarded: steps with a chain solve refused by the scope's step guard; contact "
-        "options: "
-        "elementPoints %g, sideNormals %g, pleatSearch %g\n",
+        "into the wall; guarded: steps with a chain solve refused by the scope's step guard; "
+        "contact options: elementPoints %g, sideNormals %g, pleatSearch %g\n",
         seconds, options.elementPoints, options.sideNormals, options.pleatSearch);
     std::printf("%-7s %-6s %10s %17s %9s %6s %6s %10s %9s %9s\n", "who", "seed", "cecum_s", "furthest_m",
                 "looped_s", "loops", "alpha", "peak_F_N", "outside", "guarded");
