@@ -9,11 +9,12 @@
 // expert did better than the novice.
 //
 //   construct_validity [--seconds S] [--seeds 1,2,3,...] [--element-points 0|1]
-//                      [--side-normals 0|1] [--pleat-search 0|1]
+//                      [--side-normals 0|1] [--pleat-search 0|1] [--sticking-friction 0|1]
 //
 // Seed 0 is the default colon; any other seed is a generated patient. The
-// three contact options (contact.elementPoints, contact.sideNormals,
-// contact.pleatSearch; off by default) apply to both operators' runs.
+// four contact options (contact.elementPoints, contact.sideNormals,
+// contact.pleatSearch, contact.stickingFriction; off by default) apply to
+// both operators' runs.
 
 #include "bench/ListArgument.h"
 #include "bench/PatientFromSeed.h"
@@ -52,6 +53,7 @@ struct ContactOptions {
     double elementPoints = 0.0;
     double sideNormals = 0.0;
     double pleatSearch = 0.0;
+    double stickingFriction = 0.0;
 };
 
 Run runOperator(std::uint64_t seed, const procedure::OperatorStyle& style, double seconds,
@@ -62,6 +64,7 @@ Run runOperator(std::uint64_t seed, const procedure::OperatorStyle& style, doubl
     settings.contact.elementPoints = options.elementPoints;
     settings.contact.sideNormals = options.sideNormals;
     settings.contact.pleatSearch = options.pleatSearch;
+    settings.contact.stickingFriction = options.stickingFriction;
     const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(patient.anatomy);
     procedure::ProcedureLoop loop(anatomy, settings);
     procedure::ScriptedOperator driver(style);
@@ -122,10 +125,14 @@ int main(int argc, char** argv)
             } else if (flag == "--pleat-search") {
                 const auto& spec = contact::ContactParameters::pleatSearchSpec;
                 options.pleatSearch = bench::parseList(flag, value, spec.minValue, spec.maxValue).front();
+            } else if (flag == "--sticking-friction") {
+                const auto& spec = contact::ContactParameters::stickingFrictionSpec;
+                options.stickingFriction =
+                    bench::parseList(flag, value, spec.minValue, spec.maxValue).front();
             } else {
                 throw std::invalid_argument("unknown option '" + flag +
                                             "' (allowed: --seconds, --seeds, --element-points, "
-                                            "--side-normals, --pleat-search)");
+                                            "--side-normals, --pleat-search, --sticking-friction)");
             }
         });
     } catch (const std::exception& error) {
@@ -136,8 +143,8 @@ int main(int argc, char** argv)
         "expert and novice, %.1f s per run; cecum: time to cecum (s, - when not reached); furthest: "
         "tip along the colon / colon length (m); outside: steps with the tip more than a scope diameter "
         "into the wall; guarded: steps with a chain solve refused by the scope's step guard; "
-        "contact options: elementPoints %g, sideNormals %g, pleatSearch %g\n",
-        seconds, options.elementPoints, options.sideNormals, options.pleatSearch);
+        "contact options: elementPoints %g, sideNormals %g, pleatSearch %g, stickingFriction %g\n",
+        seconds, options.elementPoints, options.sideNormals, options.pleatSearch, options.stickingFriction);
     std::printf("%-7s %-6s %10s %17s %9s %6s %6s %10s %9s %9s\n", "who", "seed", "cecum_s", "furthest_m",
                 "looped_s", "loops", "alpha", "peak_F_N", "outside", "guarded");
     int fasterToCecum = 0;

@@ -6,7 +6,7 @@ namespace colonosim::contact {
 
 namespace {
 using P = ContactParameters;
-constexpr std::array<Field<P>, 13> kContactFields{{
+constexpr std::array<Field<P>, 14> kContactFields{{
     {&P::stiffnessSpec, &P::contactStiffness},
     {&P::dampingSpec, &P::contactDamping},
     {&P::frictionSpec, &P::frictionCoefficient},
@@ -17,6 +17,7 @@ constexpr std::array<Field<P>, 13> kContactFields{{
     {&P::prefixSweepsSpec, &P::prefixSweeps},
     {&P::elementPointsSpec, &P::elementPoints},
     {&P::sideNormalsSpec, &P::sideNormals},
+    {&P::stickingFrictionSpec, &P::stickingFriction},
     {&P::pleatSearchSpec, &P::pleatSearch},
     {&P::relaxationSpec, &P::loadRelaxation},
     {&P::stepLimitSpec, &P::stepLimit},

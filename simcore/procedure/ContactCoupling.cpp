@@ -77,6 +77,10 @@ void ContactCoupling::align(int numPoints, int addedAtBase)
 {
     shiftToTip(m_load, numPoints, addedAtBase, Eigen::Vector3d::Zero().eval());
     shiftToTip(m_stepDepth, numPoints, addedAtBase, std::numeric_limits<double>::quiet_NaN());
+    if (m_stickingFriction) {
+        shiftToTip(m_friction, numPoints, addedAtBase, Eigen::Vector3d::Zero().eval());
+        shiftToTip(m_stepFriction, numPoints, addedAtBase, Eigen::Vector3d::Zero().eval());
+    }
 }
 
 void ContactCoupling::buildCompliance(const scope::DiscreteRod& rod)
@@ -282,6 +286,9 @@ void ContactCoupling::update(const std::vector<contact::LumenNodeContact>& conta
             m_growth[i] = std::isnan(before) ? 0.0 : std::max(0.0, contacts[i].depth - before);
             m_stepDepth[i] = contacts[i].depth;
         }
+        if (m_stickingFriction) {
+            m_stepFriction = m_friction;
+        }
     } else {
         m_growth.resize(static_cast<size_t>(points), 0.0);
     }
@@ -382,6 +389,12 @@ void ContactCoupling::solveAndApply(scope::DiscreteRod& rod, const contact::Lume
         load.setZero();
     }
     m_loads.setZero(3, static_cast<Eigen::Index>(m_load.size()));
+    if (m_stickingFriction) {
+        for (Eigen::Vector3d& f : m_friction) {
+            f.setZero();
+        }
+    }
+    const double mu = law.parameters().frictionCoefficient;
     for (size_t a = 0; a < m_active.size(); ++a) {
         const auto point = static_cast<size_t>(m_active[a]);
         // Friction opposes the slip measured this step, with the normal load
@@ -392,9 +405,11 @@ void ContactCoupling::solveAndApply(scope::DiscreteRod& rod, const contact::Lume
         // reverse the slip it resists. With a node's own compliance alone in
         // place of R, the many contacts of a shaft bent round the sigmoid
         // swung it from side to side by up to 20 mm a step.
-        const double stick =
-            2.0 * law.parameters().frictionCoefficient * m_lambda[a] * m_slipCompliance[a] / m_loopStep;
-        const Eigen::Vector3d load = m_force[a] + law.friction(contacts[point], m_lambda[a], stick);
+        const double stick = 2.0 * mu * m_lambda[a] * m_slipCompliance[a] / m_loopStep;
+        const Eigen::Vector3d friction = m_stickingFriction
+                                             ? stickingFriction(a, contacts[point], mu)
+                                             : law.friction(contacts[point], m_lambda[a], stick);
+        const Eigen::Vector3d load = m_force[a] + friction;
         m_load[point] = m_force[a];
         m_loads.col(static_cast<Eigen::Index>(point)) = load;
         // The rod's node forces hold its base loads (gravity) since update().
@@ -407,6 +422,29 @@ void ContactCoupling::solveAndApply(scope::DiscreteRod& rod, const contact::Lume
             rod.force[base + 1] += t * load;
         }
     }
+}
+
+Eigen::Vector3d ContactCoupling::stickingFriction(size_t a, const contact::LumenNodeContact& contact,
+                                                  double mu)
+{
+    // The step's friction at its start, turned into the tangent plane of the
+    // normal just settled on, and the load that stops the step's slip added
+    // (see solveAndApply() in the header); at most mu lambda.
+    const auto point = static_cast<size_t>(m_active[a]);
+    const Eigen::Vector3d& n = m_normal[a];
+    const Eigen::Vector3d& held = m_stepFriction[point];
+    const Eigen::Vector3d slip = contact.slip - contact.slip.dot(n) * n;
+    Eigen::Vector3d f = held - held.dot(n) * n;
+    if (m_slipCompliance[a] > 0.0) {
+        f -= (m_loopStep / (2.0 * m_slipCompliance[a])) * slip;
+    }
+    const double limit = mu * m_lambda[a];
+    const double size = f.norm();
+    if (size > limit) {
+        f *= size > 0.0 ? limit / size : 0.0;
+    }
+    m_friction[point] = f;
+    return f;
 }
 
 Eigen::MatrixXd ContactCoupling::delassus() const

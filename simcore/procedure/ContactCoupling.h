@@ -120,10 +120,13 @@ public:
     /// `points`: where along the scope the contacts are (ContactPoints.h;
     /// the nodes alone by default).
     /// `sideNormals`: the loads are pushed across the shaft (see above).
+    /// `stickingFriction`: each point's friction is kept from step to step
+    /// (see solveAndApply()).
     ContactCoupling(double contactStiffness, double maxStep, double loopStep, double relaxation,
-                    SweepLimits sweeps = {}, ContactPoints points = {}, bool sideNormals = false)
+                    SweepLimits sweeps = {}, ContactPoints points = {}, bool sideNormals = false,
+                    bool stickingFriction = false)
         : m_stiffness(contactStiffness), m_maxStep(maxStep), m_loopStep(loopStep), m_relaxation(relaxation),
-          m_limits(sweeps), m_points(points), m_sideNormals(sideNormals)
+          m_limits(sweeps), m_points(points), m_sideNormals(sideNormals), m_stickingFriction(stickingFriction)
     {}
 
     /// Updates the loads from `contacts` (one per contact point of the
@@ -145,6 +148,24 @@ public:
     /// load and the friction `law` gives for it (Coulomb, against the slip
     /// measured by update()'s contacts). The wall carries the opposite of
     /// loads().
+    ///
+    /// Friction. A point's slip s over the step (scope minus wall, across
+    /// its normal) is measured on the shape that carries the last step's
+    /// loads. By default the friction is found afresh from it,
+    /// -mu lambda s / max(|s|, v_s), with the stick speed v_s at least
+    /// 2 mu lambda R / dt (R the slip compliance, measureSlipCompliance()):
+    /// below it that is -s dt / (2 R), whatever mu, and a shaft pushed at
+    /// centimetres a second over compliances of millimetres a newton meets a
+    /// small fraction of mu lambda. With sticking friction the point's
+    /// friction f of the last step is kept, turned into the new tangent
+    /// plane, and the load that stops the step's slip added to it:
+    ///     f <- f - s dt / (2 R),  then |f| <= mu lambda,
+    /// a tangential spring of stiffness 1 / (2 R) anchored where the point
+    /// stuck: it holds while the load it needs is within the cone and slides
+    /// at mu lambda beyond (Coulomb). The gain is the stick's bound above
+    /// (the friction map of one step has a spectral radius of at most 1/2),
+    /// so the slip left decays by at least half a step. A point that leaves
+    /// its wall (lambda = 0) lets go of its friction.
     void solveAndApply(scope::DiscreteRod& rod, const contact::LumenContact& law);
 
     /// Contact load (normal and friction) at each contact point (base to tip;
@@ -177,6 +198,8 @@ private:
     void measureAxes(const scope::DiscreteRod& rod);
     /// The direction of the load at active point a for the wall's normal `n`.
     [[nodiscard]] Eigen::Vector3d loadDirection(size_t a, const Eigen::Vector3d& n) const;
+    /// Active point a's sticking friction for this solve (recorded per point), N.
+    Eigen::Vector3d stickingFriction(size_t a, const contact::LumenNodeContact& contact, double mu);
 
     double m_stiffness;
     double m_maxStep;
@@ -185,12 +208,15 @@ private:
     SweepLimits m_limits;
     ContactPoints m_points;
     bool m_sideNormals;
+    bool m_stickingFriction;
     int m_sweeps = 0;
     double m_residual = 0.0;
-    std::vector<Eigen::Vector3d> m_load;  ///< normal load per node (lambda n), N
-    std::vector<int> m_active;            ///< nodes in the update
-    std::vector<double> m_stepDepth;      ///< depth of each node at the last step's start, m (NaN: none)
-    std::vector<double> m_growth;         ///< how far each node's depth grew over the last step, m (>= 0)
+    std::vector<Eigen::Vector3d> m_load;      ///< normal load per node (lambda n), N
+    std::vector<int> m_active;                ///< nodes in the update
+    std::vector<double> m_stepDepth;          ///< depth of each node at the last step's start, m (NaN: none)
+    std::vector<double> m_growth;             ///< how far each node's depth grew over the last step, m (>= 0)
+    std::vector<Eigen::Vector3d> m_friction;  ///< friction load per point, last solve, N (sticking friction)
+    std::vector<Eigen::Vector3d> m_stepFriction;  ///< the same at the step's start, N
     // Working storage over the active nodes; it grows to the largest set
     // seen and is then reused, so a warm loop does not allocate.
     std::vector<Eigen::Matrix3d> m_block;  ///< C_ab, row-major over (a, b), m/N

@@ -416,6 +416,116 @@ TEST(ContactCoupling, TheFrictionOfManyContactsTogetherCannotReverseTheirSlip)
     EXPECT_GT(ownStick, 1.0);
 }
 
+/// A tip pressed into a fixed wall (+y) and slipping at a set speed, step
+/// after step: each step the coupling solves on the tip's depth measured from
+/// how far it has risen, and the chain settles under the loads (so that the
+/// shape carries them, as in the loop).
+struct PressedTip {
+    explicit PressedTip(bool sticking) : coupling(kStiffness, 1.0, kLoopStep, 1.0, {}, {}, false, sticking) {}
+
+    /// One loop step; `touching` false: the wall has moved 5 mm away.
+    void step(const Eigen::Vector3d& slip, bool touching = true)
+    {
+        const double rise = scope.nodePositions()[static_cast<size_t>(tip)].y() - start;
+        std::map<int, double> depths;
+        depths[tip] = touching ? kDepth - rise : -5e-3;
+        auto contacts = contactsOn(scope, depths);
+        contacts[static_cast<size_t>(tip)].slip = slip;
+        scope.clearLoads();
+        coupling.update(contacts, scope.rod(), 0, kRigidWall);
+        coupling.solveAndApply(scope.rod(), frictionLaw());
+        for (int s = 0; s < 40; ++s) {
+            scope.step();
+        }
+    }
+    [[nodiscard]] Eigen::Vector3d friction() const
+    {
+        return coupling.loads().col(tip) - coupling.normalLoads()[static_cast<size_t>(tip)];
+    }
+    [[nodiscard]] double normal() const { return coupling.normalLoads()[static_cast<size_t>(tip)].y(); }
+
+    static constexpr double kDepth = 1e-3;  // m
+    Colonoscope scope = straightScope(0.15);
+    int tip = scope.numInsertedNodes() - 1;
+    double start = scope.nodePositions()[static_cast<size_t>(tip)].y();
+    ContactCoupling coupling;
+};
+
+// Sticking friction (contact.stickingFriction): a pressed tip slipping along
+// the scope at a steady creep, step after step, carries a friction that grows
+// by the same load each step (the load that stops one step's slip,
+// slip dt / (2 R)) until it reaches mu lambda, and stays there (Coulomb).
+// Found afresh each step (the default) it stays at one step's load, a small
+// fraction of mu lambda set by the slip speed alone.
+TEST(ContactCoupling, StickingFrictionGrowsStepByStepToTheCoulombLimit)
+{
+    const double mu = ContactParameters{}.frictionCoefficient;
+    const Eigen::Vector3d slip(5e-3, 0.0, 0.0);  // m/s
+    PressedTip fresh(false);
+    PressedTip sticking(true);
+    std::vector<double> grown;
+    std::vector<double> found;
+    std::vector<double> limit;  // mu lambda of each step, N
+    for (int s = 0; s < 60; ++s) {
+        fresh.step(slip);
+        sticking.step(slip);
+        found.push_back(fresh.friction().x());
+        grown.push_back(sticking.friction().x());
+        limit.push_back(mu * sticking.normal());
+        ASSERT_GT(limit.back(), 0.0);
+        EXPECT_NEAR(sticking.friction().norm(), -grown.back(), 1e-15) << "step " << s << ": against the slip";
+    }
+    const double increment = grown[2] - grown[1];
+    ASSERT_LT(increment, 0.0) << "friction opposes the slip";
+    ASSERT_LT(-grown[1], 0.2 * limit[1]) << "one step's load is well inside the cone";
+    for (size_t s = 2; s < found.size(); ++s) {
+        EXPECT_NEAR(found[s], found[1], 1e-9 * std::abs(found[1])) << "found afresh, it does not grow";
+    }
+    EXPECT_NEAR(found[1], grown[0], 0.01 * std::abs(found[1])) << "the first step is the same either way";
+    bool reached = false;
+    for (size_t s = 2; s < grown.size(); ++s) {
+        EXPECT_GE(grown[s], -limit[s] * (1.0 + 1e-12)) << "step " << s << ": beyond the friction cone";
+        if (grown[s - 1] + increment > -limit[s]) {
+            EXPECT_NEAR(grown[s] - grown[s - 1], increment, 1e-6 * std::abs(increment)) << "step " << s;
+        } else {
+            EXPECT_NEAR(grown[s], -limit[s], 1e-12 * limit[s]) << "step " << s << ": Coulomb";
+            reached = true;
+        }
+    }
+    EXPECT_TRUE(reached) << "60 steps of slip reach the Coulomb limit";
+}
+
+// A stuck point holds its friction while it does not slip (static friction,
+// where the friction found afresh is zero), and lets go of it when it leaves
+// its wall: pressed again, it starts from none.
+TEST(ContactCoupling, StickingFrictionHoldsWithoutSlipAndLetsGoOffTheWall)
+{
+    const Eigen::Vector3d slip(5e-3, 0.0, 0.0);  // m/s
+    const Eigen::Vector3d none = Eigen::Vector3d::Zero();
+    PressedTip tip(true);
+    PressedTip fresh(false);
+    for (int s = 0; s < 3; ++s) {
+        tip.step(slip);
+        fresh.step(slip);
+    }
+    const double held = tip.friction().x();
+    ASSERT_LT(held, 0.0);
+    for (int s = 0; s < 5; ++s) {
+        tip.step(none);
+        fresh.step(none);
+        EXPECT_NEAR(tip.friction().x(), held, 1e-12 * std::abs(held)) << "step " << s << " without slip";
+        EXPECT_EQ(fresh.friction().norm(), 0.0) << "found afresh, no slip gives no friction";
+    }
+    tip.step(slip, false);
+    EXPECT_EQ(tip.friction().norm(), 0.0) << "off the wall";
+    EXPECT_EQ(tip.normal(), 0.0);
+    for (int s = 0; s < 5; ++s) {
+        tip.step(none);  // the tip settles back onto the wall
+    }
+    ASSERT_GT(tip.normal(), 0.0);
+    EXPECT_EQ(tip.friction().norm(), 0.0) << "pressed again without slip";
+}
+
 // The sweeps stop at contact.couplingSweeps, or earlier once no load changes
 // by more than contact.sweepTolerance in a sweep; residual() is that largest
 // change of the last sweep. Five contacts along one shaft, deeper towards the
