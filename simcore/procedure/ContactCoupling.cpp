@@ -405,10 +405,10 @@ void ContactCoupling::solveAndApply(scope::DiscreteRod& rod, const contact::Lume
         // reverse the slip it resists. With a node's own compliance alone in
         // place of R, the many contacts of a shaft bent round the sigmoid
         // swung it from side to side by up to 20 mm a step.
-        const double stick = 2.0 * mu * m_lambda[a] * m_slipCompliance[a] / m_loopStep;
-        const Eigen::Vector3d friction = m_stickingFriction
-                                             ? stickingFriction(a, contacts[point], mu)
-                                             : law.friction(contacts[point], m_lambda[a], stick);
+        const Eigen::Vector3d friction =
+            m_stickingFriction ? stickingFriction(a, contacts[point], mu)
+                               : law.friction(contacts[point], m_lambda[a],
+                                              2.0 * mu * m_lambda[a] * m_slipCompliance[a] / m_loopStep);
         const Eigen::Vector3d load = m_force[a] + friction;
         m_load[point] = m_force[a];
         m_loads.col(static_cast<Eigen::Index>(point)) = load;
@@ -441,7 +441,7 @@ Eigen::Vector3d ContactCoupling::stickingFriction(size_t a, const contact::Lumen
     const double limit = mu * m_lambda[a];
     const double size = f.norm();
     if (size > limit) {
-        f *= size > 0.0 ? limit / size : 0.0;
+        f *= limit / size;  // size > limit >= 0
     }
     m_friction[point] = f;
     return f;
