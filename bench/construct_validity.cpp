@@ -10,17 +10,20 @@
 //
 //   construct_validity [--seconds S] [--seeds 1,2,3,...] [--element-points 0|1]
 //                      [--side-normals 0|1] [--pleat-search 0|1] [--sticking-friction 0|1]
+//                      [--haustral-axial-ratio R]
 //
 // Seed 0 is the default colon; any other seed is a generated patient. The
 // four contact options (contact.elementPoints, contact.sideNormals,
-// contact.pleatSearch, contact.stickingFriction; off by default) apply to
-// both operators' runs.
+// contact.pleatSearch, contact.stickingFriction; off by default) and the
+// wall's tissue.haustralAxialRatio (1 by default) apply to both operators'
+// runs.
 
 #include "bench/ListArgument.h"
 #include "bench/PatientFromSeed.h"
 #include "scoring/SessionMetrics.h"
 #include "simcore/contact/ContactParameters.h"
 #include "simcore/geometry/ProceduralColon.h"
+#include "simcore/physics/TissueParameters.h"
 #include "simcore/procedure/Operator.h"
 #include "simcore/procedure/ProcedureLoop.h"
 
@@ -48,16 +51,18 @@ struct Run {
     long guarded = 0;        ///< steps with a chain solve refused by the step guard
 };
 
-/// The contact options both operators run with (ContactParameters.h).
-struct ContactOptions {
+/// The model options both operators run with (ContactParameters.h,
+/// TissueParameters.h).
+struct ModelOptions {
     double elementPoints = 0.0;
     double sideNormals = 0.0;
     double pleatSearch = 0.0;
     double stickingFriction = 0.0;
+    double haustralAxialRatio = 1.0;
 };
 
 Run runOperator(std::uint64_t seed, const procedure::OperatorStyle& style, double seconds,
-                const ContactOptions& options)
+                const ModelOptions& options)
 {
     const bench::Patient patient = bench::patientFromSeed(seed);
     procedure::ProcedureSettings settings = patient.settings;
@@ -65,6 +70,7 @@ Run runOperator(std::uint64_t seed, const procedure::OperatorStyle& style, doubl
     settings.contact.sideNormals = options.sideNormals;
     settings.contact.pleatSearch = options.pleatSearch;
     settings.contact.stickingFriction = options.stickingFriction;
+    settings.tissue.haustralAxialRatio = options.haustralAxialRatio;
     const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(patient.anatomy);
     procedure::ProcedureLoop loop(anatomy, settings);
     procedure::ScriptedOperator driver(style);
@@ -109,7 +115,7 @@ int main(int argc, char** argv)
 {
     double seconds = 60.0;
     std::vector<std::uint64_t> seeds{1, 2, 3, 4, 5, 6, 7, 8, 9, 10};
-    ContactOptions options;
+    ModelOptions options;
     try {
         bench::forEachOption(argc, argv, [&](const std::string& flag, const std::string& value) {
             if (flag == "--seconds") {
@@ -129,10 +135,15 @@ int main(int argc, char** argv)
                 const auto& spec = contact::ContactParameters::stickingFrictionSpec;
                 options.stickingFriction =
                     bench::parseList(flag, value, spec.minValue, spec.maxValue).front();
+            } else if (flag == "--haustral-axial-ratio") {
+                const auto& spec = physics::TissueParameters::haustralAxialSpec;
+                options.haustralAxialRatio =
+                    bench::parseList(flag, value, spec.minValue, spec.maxValue).front();
             } else {
                 throw std::invalid_argument("unknown option '" + flag +
                                             "' (allowed: --seconds, --seeds, --element-points, "
-                                            "--side-normals, --pleat-search, --sticking-friction)");
+                                            "--side-normals, --pleat-search, --sticking-friction, "
+                                            "--haustral-axial-ratio)");
             }
         });
     } catch (const std::exception& error) {
@@ -143,8 +154,10 @@ int main(int argc, char** argv)
         "expert and novice, %.1f s per run; cecum: time to cecum (s, - when not reached); furthest: "
         "tip along the colon / colon length (m); outside: steps with the tip more than a scope diameter "
         "into the wall; guarded: steps with a chain solve refused by the scope's step guard; "
-        "contact options: elementPoints %g, sideNormals %g, pleatSearch %g, stickingFriction %g\n",
-        seconds, options.elementPoints, options.sideNormals, options.pleatSearch, options.stickingFriction);
+        "contact options: elementPoints %g, sideNormals %g, pleatSearch %g, stickingFriction %g; "
+        "tissue.haustralAxialRatio %g\n",
+        seconds, options.elementPoints, options.sideNormals, options.pleatSearch, options.stickingFriction,
+        options.haustralAxialRatio);
     std::printf("%-7s %-6s %10s %17s %9s %6s %6s %10s %9s %9s\n", "who", "seed", "cecum_s", "furthest_m",
                 "looped_s", "loops", "alpha", "peak_F_N", "outside", "guarded");
     int fasterToCecum = 0;

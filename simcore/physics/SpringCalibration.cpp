@@ -2,8 +2,11 @@
 
 #include "simcore/physics/StaticSolver.h"
 
+#include "simcore/params/Parameter.h"
+
 #include <cmath>
 #include <numbers>
+#include <string>
 
 namespace colonosim::physics {
 
@@ -103,6 +106,46 @@ MeasuredStiffness measureTubeStiffness(const TubeResolution& tube, const TissueP
     return measured;
 }
 
+double measureTubeBendingRigidity(const TubeResolution& tube, const TissueParameters& tissue,
+                                  const StiffnessCalibration& factors)
+{
+    // A moment that bends the tube by a strain of 1e-4 at its outermost fibre
+    // (the linear response), sized from the hoop stiffness E t.
+    const double et = tissue.wallYoungModulus * tissue.wallThickness;
+    const double moment = 1e-4 * std::numbers::pi * tube.radius * tube.radius * et;
+    TubeBody tb = makeTubeBody(tube, tissue, factors);
+    const int last = tube.rings - 1;
+    double sumX2 = 0.0;
+    for (int k = 0; k < tube.nodesPerRing; ++k) {
+        const double x = tb.body.positions()(0, last * tube.nodesPerRing + k);
+        sumX2 += x * x;
+    }
+    for (int k = 0; k < tube.nodesPerRing; ++k) {
+        const int node = last * tube.nodesPerRing + k;
+        const double x = tb.body.positions()(0, node);
+        tb.body.applyExternalForce(node, Eigen::Vector3d(0.0, 0.0, -moment * x / sumX2));
+    }
+    const Positions rest = tb.body.positions();
+    solveStaticEquilibrium(tb.body, 1e-9 * moment / tube.radius);
+    // Each ring's tilt about y: the least-squares slope of its axial
+    // displacement across x.
+    const auto tilt = [&](int ring) {
+        double num = 0.0;
+        double den = 0.0;
+        for (int k = 0; k < tube.nodesPerRing; ++k) {
+            const int node = ring * tube.nodesPerRing + k;
+            const double x = rest(0, node);
+            num += x * (tb.body.positions()(2, node) - rest(2, node));
+            den += x * x;
+        }
+        return num / den;
+    };
+    const int r1 = tube.rings / 3;
+    const int r2 = 2 * tube.rings / 3;
+    const double curvature = (tilt(r1) - tilt(r2)) / ((r2 - r1) * tube.ringSpacing);
+    return moment / curvature;
+}
+
 CalibrationReport calibrateWallStiffness(const TubeResolution& tube, const TissueParameters& tissue,
                                          double tolerance)
 {
@@ -110,7 +153,7 @@ CalibrationReport calibrateWallStiffness(const TubeResolution& tube, const Tissu
     CalibrationReport report;
     for (report.iterations = 1; report.iterations <= 30; ++report.iterations) {
         const MeasuredStiffness m = measureTubeStiffness(tube, tissue, report.factors);
-        report.axialStiffnessError = m.axial / et - 1.0;
+        report.axialStiffnessError = m.axial / (tissue.haustralAxialRatio * et) - 1.0;
         report.hoopStiffnessError = m.hoop / et - 1.0;
         if (std::abs(report.axialStiffnessError) < tolerance &&
             std::abs(report.hoopStiffnessError) < tolerance) {
@@ -120,6 +163,32 @@ CalibrationReport calibrateWallStiffness(const TubeResolution& tube, const Tissu
         report.factors.circumferential /= 1.0 + report.hoopStiffnessError;
     }
     return report;
+}
+
+StiffnessCalibration wallCalibrationFor(const TissueParameters& tissue, const StiffnessCalibration& isotropic)
+{
+    if (tissue.haustralAxialRatio == 1.0) {
+        return isotropic;
+    }
+    constexpr double kTolerance = 1e-3;
+    TissueParameters plain = tissue;
+    plain.haustralAxialRatio = 1.0;
+    const TubeResolution tube;
+    const CalibrationReport reference = calibrateWallStiffness(tube, plain, kTolerance);
+    const CalibrationReport folded = calibrateWallStiffness(tube, tissue, kTolerance);
+    for (const CalibrationReport* report : {&reference, &folded}) {
+        if (!(std::abs(report->axialStiffnessError) < kTolerance &&
+              std::abs(report->hoopStiffnessError) < kTolerance)) {
+            throw params::ParameterError(
+                "tissue.haustralAxialRatio = " + std::to_string(tissue.haustralAxialRatio) +
+                ": the wall springs' calibration left an axial error of " +
+                std::to_string(report->axialStiffnessError) + " and a hoop error of " +
+                std::to_string(report->hoopStiffnessError) + " (allowed: below " +
+                std::to_string(kTolerance) + ")");
+        }
+    }
+    return {isotropic.axial * folded.factors.axial / reference.factors.axial,
+            isotropic.circumferential * folded.factors.circumferential / reference.factors.circumferential};
 }
 
 }  // namespace colonosim::physics

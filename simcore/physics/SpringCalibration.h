@@ -14,7 +14,9 @@
 /// ring; the strains are measured between rings in its middle third, away from
 /// end effects, by static equilibrium. The axial and circumferential factors
 /// are updated by the ratio of measured to target stiffness until both
-/// responses match (the shear springs couple them).
+/// responses match (the shear springs couple them). The axial target is
+/// tissue.haustralAxialRatio x E t: a haustrated wall is a bellows, far
+/// softer along the colon than around it (TissueParameters.h).
 
 #include "simcore/physics/ColonBody.h"
 
@@ -44,9 +46,28 @@ struct MeasuredStiffness {
                                                      const TissueParameters& tissue,
                                                      const StiffnessCalibration& factors);
 
-/// Finds the factors that make both effective stiffnesses equal E t within `tolerance`.
+/// Finds the factors that make the effective axial stiffness equal
+/// tissue.haustralAxialRatio x E t and the hoop stiffness E t, each within
+/// `tolerance` (relative).
 [[nodiscard]] CalibrationReport
 calibrateWallStiffness(const TubeResolution& tube, const TissueParameters& tissue, double tolerance = 1e-3);
+
+/// Bending rigidity (N m^2) of the model tube as a beam: a pure end moment M
+/// (axial loads on the last ring in proportion to each node's distance from
+/// the bending axis) bends it to a curvature kappa, measured from the tilt of
+/// the rings at one and two thirds of its length; EI = M / kappa. A thin-walled
+/// tube of axial membrane stiffness E_a t bends with EI = pi r^3 E_a t.
+[[nodiscard]] double measureTubeBendingRigidity(const TubeResolution& tube, const TissueParameters& tissue,
+                                                const StiffnessCalibration& factors);
+
+/// The factors for `tissue` given `isotropic`, factors calibrated for a wall
+/// with tissue.haustralAxialRatio 1 (ProcedureSettings::calibration): those
+/// themselves at ratio 1, else scaled by the ratio of the factors that
+/// calibrateWallStiffness() finds for the default TubeResolution with the
+/// tissue's ratio to those it finds with 1. Throws params::ParameterError
+/// when the calibration does not reach its tolerance.
+[[nodiscard]] StiffnessCalibration wallCalibrationFor(const TissueParameters& tissue,
+                                                      const StiffnessCalibration& isotropic);
 
 /// A straight tube along +z, rings of `nodesPerRing`, quads split along one diagonal.
 [[nodiscard]] geometry::TriangleMesh makeStraightTube(const TubeResolution& tube);

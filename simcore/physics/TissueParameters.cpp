@@ -6,12 +6,13 @@ namespace colonosim::physics {
 
 namespace {
 using T = TissueParameters;
-constexpr std::array<Field<T>, 15> kTissueFields{{
+constexpr std::array<Field<T>, 16> kTissueFields{{
     {&T::youngModulusSpec, &T::wallYoungModulus},
     {&T::thicknessSpec, &T::wallThickness},
     {&T::densitySpec, &T::wallDensity},
     {&T::shearRatioSpec, &T::shearStiffnessRatio},
     {&T::bendingRatioSpec, &T::bendingStiffnessRatio},
+    {&T::haustralAxialSpec, &T::haustralAxialRatio},
     {&T::dampingTimeSpec, &T::dampingTime},
     {&T::transverseDampingSpec, &T::transverseDampingRatio},
     {&T::mesenteryModulusSpec, &T::mesenteryModulus},

@@ -55,6 +55,21 @@ struct TissueParameters {
         "stiffness of the springs across adjacent triangles (torsion between triangles) "
         "relative to the structural formula",
         "assumption (NASA paper's torsion springs); no measured wall bending rigidity in the reference"};
+    static constexpr ParameterSpec haustralAxialSpec{
+        "haustralAxialRatio",
+        "1",
+        1.0,
+        0.01,
+        1.0,
+        "axial membrane stiffness of the colon wall as a tube relative to its hoop stiffness E t: the wall "
+        "springs are calibrated so that an axial load stretches the tube as a wall of axial stiffness "
+        "ratio x E t would, and the tube bends as a beam of rigidity ratio x E t pi r^3; the hoop "
+        "(insufflation) compliance stays that of E t",
+        "model choice: 1 keeps the runs the README measured bit for bit. With 1 the model tube of radius "
+        "2 cm bends as a beam of 0.086 N m^2, over twice the colonoscope's 0.026-0.040 "
+        "(reference/physical-parameters.md), and guides the scope like a pipe; the haustral folds make the "
+        "real wall a bellows that unfolds before it stretches, about (t/h)^2 of a flat strip for folds h "
+        "deep (0.04-0.16 for 5-10 mm folds of a 2 mm wall; no measured value)"};
     static constexpr ParameterSpec dampingTimeSpec{
         "dampingTime",
         "s",
@@ -142,6 +157,7 @@ struct TissueParameters {
     double wallDensity = densitySpec.defaultValue;
     double shearStiffnessRatio = shearRatioSpec.defaultValue;
     double bendingStiffnessRatio = bendingRatioSpec.defaultValue;
+    double haustralAxialRatio = haustralAxialSpec.defaultValue;
     double dampingTime = dampingTimeSpec.defaultValue;
     double transverseDampingRatio = transverseDampingSpec.defaultValue;
     double mesenteryModulus = mesenteryModulusSpec.defaultValue;

@@ -1,14 +1,13 @@
 #include "simcore/procedure/ProcedureLoop.h"
 
-#include <cmath>
-
-#include <cstdlib>
-
 #include "simcore/geometry/CentrelineSampling.h"
 #include "simcore/params/Parameter.h"
+#include "simcore/physics/SpringCalibration.h"
 #include "simcore/physics/StaticSolver.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
 
 namespace colonosim::procedure {
 
@@ -47,7 +46,8 @@ DiscomfortParameters withFailureStrain(DiscomfortParameters p, double strain)
 
 ProcedureLoop::ProcedureLoop(const geometry::ColonAnatomy& anatomy, const ProcedureSettings& settings)
     : m_anatomy(anatomy), m_settings(settings),
-      m_colon(physics::buildColonBody(anatomy, settings.tissue, settings.environment, settings.calibration,
+      m_colon(physics::buildColonBody(anatomy, settings.tissue, settings.environment,
+                                      physics::wallCalibrationFor(settings.tissue, settings.calibration),
                                       colonOptions(anatomy, settings))),
       m_scope(settings.scope), m_contact(anatomy, settings.contact),
       m_coupling(settings.contact.contactStiffness, settings.contact.stepLimit, settings.stepping.loopStep,

@@ -51,6 +51,9 @@ namespace colonosim::procedure {
 struct ProcedureSettings {
     physics::TissueParameters tissue;
     physics::EnvironmentParameters environment;
+    /// The wall springs' factors for tissue.haustralAxialRatio 1
+    /// (docs/calibration.md); another ratio scales them as
+    /// physics::wallCalibrationFor() finds.
     physics::StiffnessCalibration calibration{0.5, 0.97};
     physics::SteppingPolicy stepping;
     bool activeRegion = true;

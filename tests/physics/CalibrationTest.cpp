@@ -4,6 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <numbers>
+#include <string>
+
 namespace colonosim::physics {
 namespace {
 
@@ -40,6 +44,84 @@ TEST(Calibration, FactorsTransferToAScaledTubeAndAnotherModulus)
     const double et = tissue.wallYoungModulus * tissue.wallThickness;
     EXPECT_NEAR(m.axial / et, 1.0, 0.01);
     EXPECT_NEAR(m.hoop / et, 1.0, 0.01);
+}
+
+}  // namespace
+}  // namespace colonosim::physics
+
+namespace colonosim::physics {
+namespace {
+
+/// The colonoscope's flexural rigidity, N m^2: 0.026-0.040 along the
+/// insertion tube (reference/physical-parameters.md).
+constexpr double kScopeRigidityLow = 0.026;
+
+TEST(Calibration, TheCalibratedTubeBendsAsAThinWalledBeamStifferThanTheScope)
+{
+    // A thin-walled tube of membrane stiffness E t bends with EI = pi r^3 E t:
+    // the calibrated flat wall gives it within 3%. At the default 2 cm radius
+    // that is over twice the scope's rigidity: such a colon guides the scope
+    // like a pipe (TissueParameters::haustralAxialSpec).
+    const TissueParameters tissue;
+    const TubeResolution tube;
+    const CalibrationReport report = calibrateWallStiffness(tube, tissue, 1e-3);
+    const double ei = measureTubeBendingRigidity(tube, tissue, report.factors);
+    const double beam =
+        std::numbers::pi * std::pow(tube.radius, 3) * tissue.wallYoungModulus * tissue.wallThickness;
+    EXPECT_NEAR(ei / beam, 1.0, 0.03) << "EI " << ei << " N m^2 against pi r^3 E t " << beam;
+    EXPECT_GT(ei, 2.0 * kScopeRigidityLow);
+}
+
+TEST(Calibration, AHaustralWallIsSofterAlongAndInBendingButNotAround)
+{
+    // With the axial target a fraction of E t the calibration still meets
+    // both targets; the tube's bending rigidity follows the axial stiffness
+    // and the hoop (insufflation) compliance stays that of E t.
+    TissueParameters tissue;
+    tissue.haustralAxialRatio = 0.07;
+    const TubeResolution tube;
+    const CalibrationReport report = calibrateWallStiffness(tube, tissue, 1e-3);
+    ASSERT_LT(std::abs(report.axialStiffnessError), 1e-3);
+    ASSERT_LT(std::abs(report.hoopStiffnessError), 1e-3);
+    const double et = tissue.wallYoungModulus * tissue.wallThickness;
+    const MeasuredStiffness m = measureTubeStiffness(tube, tissue, report.factors);
+    EXPECT_NEAR(m.axial / et, 0.07, 0.07 * 2e-3);
+    EXPECT_NEAR(m.hoop / et, 1.0, 2e-3);
+    const double ei = measureTubeBendingRigidity(tube, tissue, report.factors);
+    const double beam = std::numbers::pi * std::pow(tube.radius, 3) * 0.07 * et;
+    EXPECT_NEAR(ei / beam, 1.0, 0.1) << "EI " << ei << " N m^2 against pi r^3 0.07 E t " << beam;
+    EXPECT_LT(ei, 0.5 * kScopeRigidityLow);
+}
+
+TEST(Calibration, TheRunsFactorsAreTheGivenOnesForAFlatWallAndScaledForAHaustralOne)
+{
+    TissueParameters tissue;
+    const StiffnessCalibration given{0.5, 0.97};
+    const StiffnessCalibration flat = wallCalibrationFor(tissue, given);
+    EXPECT_EQ(flat.axial, given.axial);
+    EXPECT_EQ(flat.circumferential, given.circumferential);
+    tissue.haustralAxialRatio = 0.07;
+    const StiffnessCalibration folded = wallCalibrationFor(tissue, given);
+    const CalibrationReport direct = calibrateWallStiffness(TubeResolution{}, tissue, 1e-3);
+    const CalibrationReport reference = calibrateWallStiffness(TubeResolution{}, TissueParameters{}, 1e-3);
+    EXPECT_DOUBLE_EQ(folded.axial, given.axial * direct.factors.axial / reference.factors.axial);
+    EXPECT_DOUBLE_EQ(folded.circumferential, given.circumferential * direct.factors.circumferential /
+                                                 reference.factors.circumferential);
+    EXPECT_LT(folded.axial, 0.2 * given.axial);
+}
+
+TEST(Calibration, AHaustralRatioOutsideItsRangeIsRefusedByName)
+{
+    TissueParameters tissue;
+    tissue.haustralAxialRatio = 0.001;
+    try {
+        tissue.validate();
+        FAIL() << "a ratio of 0.001 was accepted";
+    } catch (const params::ParameterError& error) {
+        EXPECT_NE(std::string(error.what()).find("tissue.haustralAxialRatio = 0.001"), std::string::npos)
+            << error.what();
+        EXPECT_NE(std::string(error.what()).find("[0.01, 1]"), std::string::npos) << error.what();
+    }
 }
 
 }  // namespace
