@@ -1,8 +1,7 @@
 #include "simcore/physics/SpringCalibration.h"
 
-#include "simcore/physics/StaticSolver.h"
-
 #include "simcore/params/Parameter.h"
+#include "simcore/physics/StaticSolver.h"
 
 #include <cmath>
 #include <numbers>

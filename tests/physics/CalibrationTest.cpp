@@ -46,12 +46,6 @@ TEST(Calibration, FactorsTransferToAScaledTubeAndAnotherModulus)
     EXPECT_NEAR(m.hoop / et, 1.0, 0.01);
 }
 
-}  // namespace
-}  // namespace colonosim::physics
-
-namespace colonosim::physics {
-namespace {
-
 /// The colonoscope's flexural rigidity, N m^2: 0.026-0.040 along the
 /// insertion tube (reference/physical-parameters.md).
 constexpr double kScopeRigidityLow = 0.026;
