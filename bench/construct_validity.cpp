@@ -10,13 +10,14 @@
 //
 //   construct_validity [--seconds S] [--seeds 1,2,3,...] [--element-points 0|1]
 //                      [--side-normals 0|1] [--pleat-search 0|1] [--sticking-friction 0|1]
-//                      [--haustral-axial-ratio R]
+//                      [--haustral-axial-ratio R] [--max-node-step M]
 //
 // Seed 0 is the default colon; any other seed is a generated patient. The
 // four contact options (contact.elementPoints, contact.sideNormals,
 // contact.pleatSearch, contact.stickingFriction; off by default) and the
-// wall's tissue.haustralAxialRatio (1 by default) apply to both operators'
-// runs.
+// wall's tissue.haustralAxialRatio (1 by default) and the scope's step guard
+// (scope.maxNodeStep, m; 1 by default: off in practice) apply to both
+// operators' runs.
 
 #include "bench/ListArgument.h"
 #include "bench/PatientFromSeed.h"
@@ -26,6 +27,7 @@
 #include "simcore/physics/TissueParameters.h"
 #include "simcore/procedure/Operator.h"
 #include "simcore/procedure/ProcedureLoop.h"
+#include "simcore/scope/ScopeParameters.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -59,6 +61,7 @@ struct ModelOptions {
     double pleatSearch = 0.0;
     double stickingFriction = 0.0;
     double haustralAxialRatio = 1.0;
+    double maxNodeStep = scope::ScopeParameters{}.maxNodeStep;  ///< m
 };
 
 Run runOperator(std::uint64_t seed, const procedure::OperatorStyle& style, double seconds,
@@ -71,6 +74,7 @@ Run runOperator(std::uint64_t seed, const procedure::OperatorStyle& style, doubl
     settings.contact.pleatSearch = options.pleatSearch;
     settings.contact.stickingFriction = options.stickingFriction;
     settings.tissue.haustralAxialRatio = options.haustralAxialRatio;
+    settings.scope.maxNodeStep = options.maxNodeStep;
     const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(patient.anatomy);
     procedure::ProcedureLoop loop(anatomy, settings);
     procedure::ScriptedOperator driver(style);
@@ -139,11 +143,14 @@ int main(int argc, char** argv)
                 const auto& spec = physics::TissueParameters::haustralAxialSpec;
                 options.haustralAxialRatio =
                     bench::parseList(flag, value, spec.minValue, spec.maxValue).front();
+            } else if (flag == "--max-node-step") {
+                const auto& spec = scope::ScopeParameters::maxNodeStepSpec;
+                options.maxNodeStep = bench::parseList(flag, value, spec.minValue, spec.maxValue).front();
             } else {
                 throw std::invalid_argument("unknown option '" + flag +
                                             "' (allowed: --seconds, --seeds, --element-points, "
                                             "--side-normals, --pleat-search, --sticking-friction, "
-                                            "--haustral-axial-ratio)");
+                                            "--haustral-axial-ratio, --max-node-step)");
             }
         });
     } catch (const std::exception& error) {
@@ -155,9 +162,9 @@ int main(int argc, char** argv)
         "tip along the colon / colon length (m); outside: steps with the tip more than a scope diameter "
         "into the wall; guarded: steps with a chain solve refused by the scope's step guard; "
         "contact options: elementPoints %g, sideNormals %g, pleatSearch %g, stickingFriction %g; "
-        "tissue.haustralAxialRatio %g\n",
+        "tissue.haustralAxialRatio %g; scope.maxNodeStep %g m\n",
         seconds, options.elementPoints, options.sideNormals, options.pleatSearch, options.stickingFriction,
-        options.haustralAxialRatio);
+        options.haustralAxialRatio, options.maxNodeStep);
     std::printf("%-7s %-6s %10s %17s %9s %6s %6s %10s %9s %9s\n", "who", "seed", "cecum_s", "furthest_m",
                 "looped_s", "loops", "alpha", "peak_F_N", "outside", "guarded");
     int fasterToCecum = 0;
