@@ -20,11 +20,11 @@
 #include "simcore/geometry/ProceduralColon.h"
 #include "simcore/procedure/Operator.h"
 #include "simcore/procedure/ProcedureLoop.h"
+#include "tests/procedure/LoopObservation.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <string>
 #include <utility>
@@ -112,11 +112,10 @@ TEST(HaustralWall, AStraightPushIntoARedundantSigmoidFormsAnNLoopOnlyWhenTheWall
 // 23 s procedure, 45-75 s.
 TEST(HaustralWall, APushPastTheHepaticFlexureFormsAGammaLoopThatTheGuardedShaftHolds)
 {
-    constexpr int kSteps = 23000;    // 23 s at 1 kHz: the novice's push, to the start of its withdrawal
-    constexpr double kGuard = 0.01;  // m, scope.maxNodeStep
-    constexpr double kForceLimit =
-        43.0;  // N at the handle: real colonoscopists' peak push (Appleyard et al. 2000)
-    constexpr int kStepsOutside = 50;  // steps with the tip more than a scope diameter in
+    constexpr int kSteps = 23000;         // 23 s at 1 kHz: the novice's push, to the start of its withdrawal
+    constexpr double kGuard = 0.01;       // m, scope.maxNodeStep
+    constexpr double kForceLimit = 43.0;  // N at the handle: real operators' peak push (Appleyard 2000)
+    constexpr int kStepsOutside = 50;     // steps with the tip more than a scope diameter in
     const cases::SceneSpec scene = cases::toScene(cases::CaseGenerator().generate(1));
     const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(scene.anatomy);
     procedure::ProcedureSettings settings = cases::procedureSettings(scene);
@@ -125,10 +124,9 @@ TEST(HaustralWall, APushPastTheHepaticFlexureFormsAGammaLoopThatTheGuardedShaftH
     procedure::ProcedureLoop loop(anatomy, settings);
     procedure::ScriptedOperator novice(procedure::noviceStyle());
     const double diameter = settings.scope.outerDiameter;
-    bool finite = true;
-    double peakForce = 0.0;
-    double largestStep = 0.0;   // m, the furthest any scope node moved in one step
-    double deepestPoint = 0.0;  // m, the deepest any contact point lay in the wall
+    looptest::RunSummary summary;  // finite throughout, and the peak handle force
+    double largestStep = 0.0;      // m, the furthest any scope node moved in one step
+    double deepestPoint = 0.0;     // m, the deepest any contact point lay in the wall
     int outside = 0;
     double mostStored = 0.0;
     double gammaAt = -1.0;          // s, when the gamma loop was first read; < 0: never
@@ -142,12 +140,9 @@ TEST(HaustralWall, APushPastTheHepaticFlexureFormsAGammaLoopThatTheGuardedShaftH
         // Nodes enter at the base: compare the two shapes from the tip.
         const size_t shift = now.size() - before.size();
         for (size_t i = shift; i < now.size(); ++i) {
-            finite = finite && now[i].allFinite();
             largestStep = std::max(largestStep, (now[i] - before[i - shift]).norm());
         }
-        const procedure::ProcedureOutputs& out = loop.outputs();
-        finite = finite && std::isfinite(out.handleForce) && loop.colon().body.positions().allFinite();
-        peakForce = std::max(peakForce, std::abs(out.handleForce));
+        looptest::observe(loop, summary);
         for (const contact::LumenNodeContact& c : loop.lumen().contacts()) {
             deepestPoint = std::max(deepestPoint, c.depth);
         }
@@ -168,23 +163,22 @@ TEST(HaustralWall, APushPastTheHepaticFlexureFormsAGammaLoopThatTheGuardedShaftH
     }
     std::printf("gamma loop read at %.3f s, %.1f cm stored at most; largest node step %.1f mm, deepest point "
                 "%.1f mm, %d steps with the tip more than a diameter in, peak handle force %.1f N, a node "
-                "%.1f mm from the wall "
-                "at most\n",
-                gammaAt, mostStored * 100, largestStep * 1e3, deepestPoint * 1e3, outside, peakForce,
-                furthestFromWall * 1e3);
+                "%.1f mm from the wall at most\n",
+                gammaAt, mostStored * 100, largestStep * 1e3, deepestPoint * 1e3, outside,
+                summary.peakHandleForce, furthestFromWall * 1e3);
     RecordProperty("gamma_at_s", std::to_string(gammaAt));
     RecordProperty("most_stored_cm", std::to_string(mostStored * 100));
     RecordProperty("largest_step_mm", std::to_string(largestStep * 1e3));
     RecordProperty("deepest_point_mm", std::to_string(deepestPoint * 1e3));
 
-    ASSERT_TRUE(finite);
+    ASSERT_TRUE(summary.finite);
     // A node more than a scope diameter beyond the widest lumen's radius from
     // every wall node has gone through the wall (the escape left nodes
     // hundreds of millimetres out).
-    const geometry::AnatomyParameters& a = scene.anatomy;
-    const double widest =
-        std::max({a.rectumDiameter, a.sigmoidDiameter, a.descendingDiameter, a.splenicFlexureDiameter,
-                  a.transverseDiameter, a.hepaticFlexureDiameter, a.ascendingDiameter, a.cecumDiameter});
+    double widest = 0.0;
+    for (int g = 0; g < geometry::kNumSegments; ++g) {
+        widest = std::max(widest, scene.anatomy.diameter(static_cast<geometry::Segment>(g)));
+    }
     EXPECT_LT(furthestFromWall, 0.5 * widest + diameter) << "m from the nearest wall node";
     EXPECT_GT(gammaAt, 15.0) << "s: the tip reached the transverse colon after 15 s";
     EXPECT_GT(mostStored, 0.25) << "m of shaft stored behind the held tip";
@@ -194,7 +188,7 @@ TEST(HaustralWall, APushPastTheHepaticFlexureFormsAGammaLoopThatTheGuardedShaftH
     // scope diameters of the wall (the unguarded escape left points 207 mm out).
     EXPECT_LT(deepestPoint, 2.0 * diameter) << "m into the wall";
     EXPECT_LT(outside, kStepsOutside);
-    EXPECT_LT(peakForce, kForceLimit) << "N at the handle";
+    EXPECT_LT(summary.peakHandleForce, kForceLimit) << "N at the handle";
 }
 
 }  // namespace
