@@ -143,6 +143,19 @@ struct AnatomyParameters {
         0.100,
         "mesentery height of a mobile ascending colon, cecum or descending colon",
         "assumption: no measured value; shorter than the transverse and sigmoid mesocolon"};
+    static constexpr Spec sigmoidRootLengthSpec{
+        "sigmoidRootLength",
+        "m",
+        0.0,
+        0.0,
+        0.30,
+        "length of one root line on the posterior wall that the whole sigmoid hangs from, centred on the "
+        "chord between the sigmoid's two ends, each ring tethered to its nearest point on it; 0: each ring "
+        "hangs from a point sigmoidMesenteryHeight behind it",
+        "assumption: no measured root length; a long sigmoid on a narrow mesocolon root swings round it "
+        "(the anatomy of alpha looping and sigmoid volvulus; a short or fixed sigmoid mesocolon allows no "
+        "alpha or spiral loop, Cotton and Williams); 0.17 m, the chord of the 66 cm redundant sigmoid, "
+        "forms a crossed loop under a push (tests/procedure/SigmoidLoopTest.cpp)"};
 
     // Haustral folds and taeniae (visual mesh only).
     static constexpr Spec haustralFoldDepthSpec{
@@ -223,6 +236,7 @@ struct AnatomyParameters {
     double transverseMesenteryHeight = transverseMesenteryHeightSpec.defaultValue;
     double sigmoidMesenteryHeight = sigmoidMesenteryHeightSpec.defaultValue;
     double mobileColonMesenteryHeight = mobileColonMesenteryHeightSpec.defaultValue;
+    double sigmoidRootLength = sigmoidRootLengthSpec.defaultValue;
 
     double haustralFoldDepth = haustralFoldDepthSpec.defaultValue;
     double haustralFoldSpacing = haustralFoldSpacingSpec.defaultValue;

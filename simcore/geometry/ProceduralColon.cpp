@@ -7,6 +7,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace colonosim::geometry {
@@ -127,6 +128,42 @@ Attachment attachmentOf(const AnatomyParameters& p, const ColonLayout& layout, d
     }
 }
 
+/// The sigmoid's mesocolon on one root line (AnatomyParameters::sigmoidRootLength):
+/// `length` long, centred on the chord between the centres of the sigmoid's
+/// first and last mobile rings, a lumen radius behind it; each mobile sigmoid
+/// node is tethered to its nearest point on that line.
+void hangSigmoidFromOneRoot(ColonAnatomy& anatomy, double length)
+{
+    double lo = std::numeric_limits<double>::infinity();
+    double hi = -std::numeric_limits<double>::infinity();
+    const auto mobileSigmoid = [](const PhysicsNodeInfo& info) {
+        return info.segment == Segment::Sigmoid && info.attachment == Attachment::Mesenteric;
+    };
+    for (const PhysicsNodeInfo& info : anatomy.physicsNodes) {
+        if (mobileSigmoid(info)) {
+            lo = std::min(lo, info.arcLength);
+            hi = std::max(hi, info.arcLength);
+        }
+    }
+    if (!(hi > lo)) {
+        return;
+    }
+    const CentrelineSample first = sampleCentreline(anatomy.centreline, lo);
+    const CentrelineSample last = sampleCentreline(anatomy.centreline, hi);
+    const Eigen::Vector3d chord = last.point - first.point;
+    const Eigen::Vector3d along = chord.normalized();
+    const Eigen::Vector3d middle =
+        0.5 * (first.point + last.point) + 0.5 * (first.radius + last.radius) * Eigen::Vector3d::UnitY();
+    const Eigen::Vector3d from = middle - 0.5 * length * along;
+    for (std::size_t i = 0; i < anatomy.physicsNodes.size(); ++i) {
+        PhysicsNodeInfo& info = anatomy.physicsNodes[i];
+        if (mobileSigmoid(info)) {
+            const Eigen::Vector3d x = anatomy.physicsMesh.vertices.col(static_cast<Eigen::Index>(i));
+            info.mesenteryRoot = from + std::clamp((x - from).dot(along), 0.0, length) * along;
+        }
+    }
+}
+
 int nearestVertex(const TriangleMesh& mesh, const Eigen::Vector3d& p)
 {
     Eigen::Index best = 0;
@@ -169,6 +206,9 @@ ColonAnatomy buildProceduralColon(const AnatomyParameters& params)
                 ? Eigen::Vector3d(cs.point + (mesenteryHeight(params, cs.segment) + cs.radius) *
                                                  Eigen::Vector3d::UnitY())
                 : rest;
+    }
+    if (params.sigmoidRootLength > 0.0) {
+        hangSigmoidFromOneRoot(anatomy, params.sigmoidRootLength);
     }
 
     // Visual mesh with haustral folds and taeniae.

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace colonosim::procedure {
 
@@ -36,30 +37,51 @@ double cross2(const Eigen::Vector2d& a, const Eigen::Vector2d& b)
     return a.x() * b.y() - a.y() * b.x();
 }
 
-bool segmentsCross(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
-                   const Eigen::Vector2d& d)
+/// Where segments ab and cd cross in the plane: the fractions along each, or
+/// nothing when they do not (touching ends and parallel segments do not cross).
+std::optional<Eigen::Vector2d> segmentsCross(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
+                                             const Eigen::Vector2d& c, const Eigen::Vector2d& d)
 {
     const double d1 = cross2(b - a, c - a);
     const double d2 = cross2(b - a, d - a);
     const double d3 = cross2(d - c, a - c);
     const double d4 = cross2(d - c, b - c);
-    return d1 * d2 < 0.0 && d3 * d4 < 0.0;
+    if (!(d1 * d2 < 0.0 && d3 * d4 < 0.0)) {
+        return std::nullopt;
+    }
+    // d3 and d4 are the signed distances of a and b from cd, d1 and d2 those of c and d from ab.
+    return Eigen::Vector2d(d3 / (d3 - d4), d1 / (d1 - d2));
 }
 }  // namespace
 
-int coronalCrossings(const Eigen::Matrix3Xd& polyline)
+std::vector<CoronalCrossing> coronalCrossingList(const Eigen::Matrix3Xd& polyline)
 {
     const Eigen::Index n = polyline.cols();
-    int crossings = 0;
+    std::vector<CoronalCrossing> crossings;
     for (Eigen::Index i = 0; i + 1 < n; ++i) {
         for (Eigen::Index j = i + 2; j + 1 < n; ++j) {
-            if (segmentsCross(coronal(polyline.col(i)), coronal(polyline.col(i + 1)),
-                              coronal(polyline.col(j)), coronal(polyline.col(j + 1)))) {
-                ++crossings;
+            const auto at = segmentsCross(coronal(polyline.col(i)), coronal(polyline.col(i + 1)),
+                                          coronal(polyline.col(j)), coronal(polyline.col(j + 1)));
+            if (!at) {
+                continue;
             }
+            const Eigen::Vector3d earlier = polyline.col(i + 1) - polyline.col(i);
+            const Eigen::Vector3d later = polyline.col(j + 1) - polyline.col(j);
+            const double yEarlier = polyline(1, i) + (*at)(0) * earlier.y();
+            const double yLater = polyline(1, j) + (*at)(1) * later.y();
+            const bool earlierOver = yEarlier < yLater;  // nearer the front
+            const Eigen::Vector2d over = coronal(earlierOver ? earlier : later);
+            const Eigen::Vector2d under = coronal(earlierOver ? later : earlier);
+            crossings.push_back({static_cast<double>(i) + (*at)(0), static_cast<double>(j) + (*at)(1),
+                                 cross2(over, under) > 0.0 ? 1 : -1});
         }
     }
     return crossings;
+}
+
+int coronalCrossings(const Eigen::Matrix3Xd& polyline)
+{
+    return static_cast<int>(coronalCrossingList(polyline).size());
 }
 
 double coronalTurning(const Eigen::Matrix3Xd& polyline)
@@ -77,12 +99,13 @@ double coronalTurning(const Eigen::Matrix3Xd& polyline)
 
 namespace {
 using L = LoopParameters;
-constexpr std::array<params::Field<L>, 5> kLoopFields{{
+constexpr std::array<params::Field<L>, 6> kLoopFields{{
     {&L::thresholdSpec, &L::threshold},
     {&L::resolveFractionSpec, &L::resolveFraction},
     {&L::typeDwellSpec, &L::typeDwell},
     {&L::analysisIntervalSpec, &L::analysisInterval},
     {&L::paradoxWindowSpec, &L::paradoxWindow},
+    {&L::crossingMatchSpec, &L::crossingMatch},
 }};
 }  // namespace
 
@@ -199,10 +222,17 @@ LoopKind LoopDetector::update(const Eigen::Matrix3Xd& shaft, double insertion,
             }
         }
     }
-    // Shape of the looped part: the nodes in the worst segment, in order.
+    // Shape of the looped part: the nodes in the worst segment, in order; a
+    // loop of the left colon is read over all of its shaft there, since an
+    // alpha loop closes on the shaft that leaves the sigmoid.
+    const auto leftColon = [](Segment g) {
+        return g == Segment::Rectum || g == Segment::Sigmoid || g == Segment::Descending;
+    };
+    const bool left = leftColon(signals.segment);
     std::vector<int> looped;
     for (Eigen::Index i = 0; i < tube; ++i) {
-        if (segment[static_cast<size_t>(i)] == signals.segment) {
+        const Segment g = segment[static_cast<size_t>(i)];
+        if (g == signals.segment || (left && leftColon(g))) {
             looped.push_back(static_cast<int>(i));
         }
     }
@@ -214,9 +244,52 @@ LoopKind LoopDetector::update(const Eigen::Matrix3Xd& shaft, double insertion,
         const Eigen::Matrix3Xd part = shaft.middleCols(first, last - first + 1);
         // Relative to the colon's own path over the same stretch: a shaft that
         // merely follows a sigmoid which crosses itself in the anterior view
-        // is not looped.
-        const Eigen::Matrix3Xd path = colonPath(s[static_cast<size_t>(first)], s[static_cast<size_t>(last)]);
-        signals.crossings = std::max(0, coronalCrossings(part) - coronalCrossings(path));
+        // crosses where the colon does, and is not looped.
+        const double from = s[static_cast<size_t>(first)];
+        const double to = s[static_cast<size_t>(last)];
+        const Eigen::Matrix3Xd path = colonPath(from, to);
+        const auto nodeArc = [&](double at) {
+            const auto k = static_cast<size_t>(first) + static_cast<size_t>(at);
+            const double f = at - std::floor(at);
+            return k + 1 < s.size() ? (1.0 - f) * s[k] + f * s[k + 1] : s[k];
+        };
+        const auto pathArc = [&](double at) {
+            return from + (to - from) * at / static_cast<double>(std::max<Eigen::Index>(1, path.cols() - 1));
+        };
+        const std::vector<CoronalCrossing> own = coronalCrossingList(part);
+        const std::vector<CoronalCrossing> rest = coronalCrossingList(path);
+        const double match = m_parameters.crossingMatch;
+        // Length along the part to each of its nodes: a crossing of two strands
+        // closer than the threshold along the shaft is no loop (a shaft seen
+        // nearly end on projects to a cusp, and a polyline over a cusp may
+        // cross itself).
+        std::vector<double> along(static_cast<size_t>(part.cols()), 0.0);
+        for (Eigen::Index k = 1; k < part.cols(); ++k) {
+            along[static_cast<size_t>(k)] =
+                along[static_cast<size_t>(k - 1)] + (part.col(k) - part.col(k - 1)).norm();
+        }
+        const auto alongAt = [&](double at) {
+            const auto k = static_cast<size_t>(at);
+            const double f = at - std::floor(at);
+            return k + 1 < along.size() ? (1.0 - f) * along[k] + f * along[k + 1] : along[k];
+        };
+        for (const CoronalCrossing& c : own) {
+            if (alongAt(c.second) - alongAt(c.first) < m_parameters.threshold) {
+                continue;
+            }
+            const double a = nodeArc(c.first);
+            const double b = nodeArc(c.second);
+            const bool colons = std::any_of(rest.begin(), rest.end(), [&](const CoronalCrossing& r) {
+                const double ra = pathArc(r.first);
+                const double rb = pathArc(r.second);
+                return (std::abs(a - ra) <= match && std::abs(b - rb) <= match) ||
+                       (std::abs(a - rb) <= match && std::abs(b - ra) <= match);
+            });
+            if (!colons) {
+                ++signals.crossings;
+                signals.handedness += c.handedness;
+            }
+        }
         signals.turning = coronalTurning(part) - coronalTurning(path);
     }
     signals.tipArcLength = s.back();
@@ -269,7 +342,10 @@ LoopKind LoopDetector::classify(const LoopSignals& signals)
     case Segment::Rectum:
     case Segment::Sigmoid:
     case Segment::Descending:
-        return !crossed ? LoopKind::N : (signals.turning > 0.0 ? LoopKind::Alpha : LoopKind::ReverseAlpha);
+        if (!crossed || signals.handedness == 0) {
+            return LoopKind::N;
+        }
+        return signals.handedness < 0 ? LoopKind::Alpha : LoopKind::ReverseAlpha;
     case Segment::SplenicFlexure: return crossed ? LoopKind::ReverseSplenic : LoopKind::GammaDeepTransverse;
     default: return LoopKind::GammaDeepTransverse;
     }

@@ -21,15 +21,30 @@
 ///     colon over the last window; the clinical warning sign is a tip that
 ///     stops moving 1:1 with the shaft (ratio above 2).
 ///   - crossings: self-crossings of the shaft projected on the coronal plane
-///     (seen from the front, x left / z up), and the handedness of the
-///     looped part (sign of its projected turning), both counted beyond
-///     those of the colon's own path over the same stretch.
+///     (seen from the front, x left / z up) that the colon's own path at rest
+///     does not have at the same place along it (both strands within
+///     `crossingMatch` of one of the path's crossings), and the handedness of
+///     each: at a crossing the strand nearer the front passes over the
+///     other, and the crossing is right-handed when the over strand's
+///     direction turns counter-clockwise onto the under strand's in the
+///     anterior view (a right-handed helix seen side on crosses itself
+///     right-handed). For a loop in the left colon the crossings are read over
+///     the whole of the shaft in the rectum, sigmoid and descending colon: an
+///     alpha loop closes where the shaft leaves the sigmoid.
 /// Each node is located along the colon near its predecessor (a window of
 /// -5/+15 cm), so loops never jump to a part of the colon close in space.
 /// Classification, by the segment holding the most excess shaft:
-///   sigmoid (or descending) with a crossing: Alpha if the loop turns
-///     counter-clockwise in the anterior view, ReverseAlpha if clockwise;
-///   sigmoid without a crossing: N;
+///   sigmoid (or descending) with crossings: Alpha if they are left-handed
+///     on balance, ReverseAlpha if right-handed (the handedness, not the
+///     direction the projection turns, is the loop's: the same clockwise
+///     curl in the anterior view is one or the other by which strand passes
+///     in front. reference/clinical-assessment.md: the alpha loop is a
+///     clockwise spiral, the reverse alpha passes behind the shaft and needs
+///     counter-clockwise torque; the alpha is formed by counter-clockwise
+///     rotation as the shaft advances (Cotton and Williams) and reduced by
+///     clockwise torque: a shaft advancing while turning counter-clockwise
+///     as its operator sees it winds left-handed);
+///   sigmoid without a crossing, or with crossings whose handedness cancels: N;
 ///   transverse (or hepatic flexure): GammaDeepTransverse;
 ///   splenic flexure with a crossing: ReverseSplenic;
 /// and None while both the excess and the stored shaft are below the
@@ -51,6 +66,7 @@
 #include <algorithm>
 #include <span>
 #include <string_view>
+#include <vector>
 
 namespace colonosim::procedure {
 
@@ -96,6 +112,17 @@ struct LoopParameters {
                                                0.1,
                                                "time between two analyses of the shaft's shape",
                                                "model choice: the recorder's 100 Hz sampling rate"};
+    static constexpr Spec crossingMatchSpec{
+        "crossingMatch",
+        "m",
+        0.10,
+        0.01,
+        0.50,
+        "how far along the colon both strands of a shaft crossing may lie from a crossing of the colon's "
+        "own path at rest for it to be the colon's, not a loop's",
+        "model choice: a shaft that follows a colon which crosses itself at rest crosses where the colon "
+        "does, give or take how far the mobile colon moves with it (its sigmoid's rings 5-10 cm under the "
+        "expert, README)"};
     static constexpr Spec paradoxWindowSpec{
         "paradoxWindow",
         "m",
@@ -111,6 +138,7 @@ struct LoopParameters {
     double typeDwell = typeDwellSpec.defaultValue;
     double analysisInterval = analysisIntervalSpec.defaultValue;
     double paradoxWindow = paradoxWindowSpec.defaultValue;
+    double crossingMatch = crossingMatchSpec.defaultValue;
 
     [[nodiscard]] static std::span<const params::Field<LoopParameters>> fields();
     /// Throws ParameterError naming the field, the value and the range.
@@ -125,9 +153,13 @@ struct LoopSignals {
     /// arc length along the colon at rest, m.
     double storedShaft = 0.0;
     geometry::Segment segment = geometry::Segment::Rectum;  ///< where the excess is
-    int crossings = 0;                                      ///< coronal self-crossings of the shaft
-    double turning =
-        0.0;  ///< signed coronal turning of the shaft in that segment, rad (+ = counter-clockwise)
+    /// Coronal self-crossings of the looped shaft that the colon's path at rest does not have.
+    int crossings = 0;
+    /// Their handedness summed: +1 for each right-handed crossing, -1 for each left-handed.
+    int handedness = 0;
+    /// Signed coronal turning of the looped shaft beyond the colon's path over
+    /// the same stretch, rad (+ = counter-clockwise); reported, not used to type a loop.
+    double turning = 0.0;
     double tipAdvanceRatio = 1.0;       ///< insertion advance / tip advance over the window (1 = 1:1)
     double tipArcLength = 0.0;          ///< where the tip is along the colon, m
     LoopKind reading = LoopKind::None;  ///< this analysis's own type, before the type's hysteresis
@@ -178,7 +210,20 @@ private:
     double m_windowTip = 0.0;
 };
 
-/// Self-crossings of a polyline projected on the coronal (x, z) plane.
+/// One self-crossing of a polyline projected on the coronal (x, z) plane.
+struct CoronalCrossing {
+    double first = 0.0;   ///< where the earlier strand crosses: node index plus the fraction of its segment
+    double second = 0.0;  ///< where the later strand crosses, the same way
+    /// +1 right-handed, -1 left-handed: the strand nearer the front (smaller
+    /// y) passes over, and the crossing is right-handed when the over
+    /// strand's direction turns counter-clockwise onto the under strand's in
+    /// the anterior view.
+    int handedness = 0;
+};
+
+/// Self-crossings of a polyline projected on the coronal (x, z) plane, in order.
+[[nodiscard]] std::vector<CoronalCrossing> coronalCrossingList(const Eigen::Matrix3Xd& polyline);
+/// Their number.
 [[nodiscard]] int coronalCrossings(const Eigen::Matrix3Xd& polyline);
 /// Signed turning of a polyline in the coronal plane (anterior view), rad.
 [[nodiscard]] double coronalTurning(const Eigen::Matrix3Xd& polyline);

@@ -141,6 +141,55 @@ INSTANTIATE_TEST_SUITE_P(Cases, Mobility,
                                            MobilityCase{"fullyMobile", 1.0, 1.0, true, true, true}),
                          [](const auto& info) { return std::string(info.param.name); });
 
+// anatomy.sigmoidRootLength: the whole mobile sigmoid hangs from one root
+// line that long; every other node keeps the root it has by default.
+TEST(SigmoidRoot, TheSigmoidHangsFromOneLineOfTheDeclaredLength)
+{
+    AnatomyParameters perRing;
+    perRing.sigmoidLength = 0.66;
+    AnatomyParameters narrow = perRing;
+    narrow.sigmoidRootLength = 0.17;
+    const ColonAnatomy a = buildProceduralColon(perRing);
+    const ColonAnatomy b = buildProceduralColon(narrow);
+    ASSERT_EQ(a.physicsNodes.size(), b.physicsNodes.size());
+    Eigen::Vector3d lo = Eigen::Vector3d::Zero();
+    Eigen::Vector3d hi = Eigen::Vector3d::Zero();
+    double spread = -1.0;
+    int sigmoidNodes = 0;
+    for (size_t i = 0; i < b.physicsNodes.size(); ++i) {
+        const PhysicsNodeInfo& info = b.physicsNodes[i];
+        if (info.segment != Segment::Sigmoid || info.attachment != Attachment::Mesenteric) {
+            EXPECT_EQ((info.mesenteryRoot - a.physicsNodes[i].mesenteryRoot).norm(), 0.0) << "node " << i;
+            continue;
+        }
+        ++sigmoidNodes;
+        // The two roots furthest apart span the line.
+        for (size_t j = 0; j < i; ++j) {
+            const PhysicsNodeInfo& other = b.physicsNodes[j];
+            if (other.segment == Segment::Sigmoid && other.attachment == Attachment::Mesenteric &&
+                (info.mesenteryRoot - other.mesenteryRoot).norm() > spread) {
+                spread = (info.mesenteryRoot - other.mesenteryRoot).norm();
+                lo = other.mesenteryRoot;
+                hi = info.mesenteryRoot;
+            }
+        }
+        const Eigen::Vector3d rest = b.physicsMesh.vertices.col(static_cast<Eigen::Index>(i));
+        EXPECT_GT((info.mesenteryRoot - rest).norm(), 0.0) << "a tether of length 0 at node " << i;
+    }
+    ASSERT_GT(sigmoidNodes, 100);
+    EXPECT_NEAR(spread, 0.17, 1e-9) << "the line's ends are the roots of the sigmoid's two ends";
+    const Eigen::Vector3d along = (hi - lo).normalized();
+    for (const PhysicsNodeInfo& info : b.physicsNodes) {
+        if (info.segment == Segment::Sigmoid && info.attachment == Attachment::Mesenteric) {
+            const Eigen::Vector3d r = info.mesenteryRoot - lo;
+            EXPECT_LT((r - r.dot(along) * along).norm(), 1e-12) << "every root on the one line";
+        }
+    }
+    AnatomyParameters tooLong = perRing;
+    tooLong.sigmoidRootLength = 0.31;
+    EXPECT_THROW(tooLong.validate(), params::ParameterError);
+}
+
 TEST_F(ProceduralColon, LandmarksSitInTheCecum)
 {
     ASSERT_EQ(anatomy().landmarks.size(), 2u);

@@ -38,7 +38,29 @@ double segmentMiddle(Segment segment)
     return 0.5 * (lo + hi);
 }
 
-enum class Extra { None, CurlCounterClockwise, CurlClockwise, AnteriorBulge };
+/// The shapes a test inserts. A curl turns clockwise or counter-clockwise in
+/// the anterior view and rises 3 cm towards the front or the back as it goes
+/// round, so the curl's end passes in front of or behind the shaft that leads
+/// into it: clockwise with the curl in front and counter-clockwise with it
+/// behind are left-handed (an alpha loop), the other two right-handed.
+enum class Extra {
+    None,
+    CurlClockwiseInFront,
+    CurlClockwiseBehind,
+    CurlCounterClockwiseInFront,
+    CurlCounterClockwiseBehind,
+    AnteriorBulge
+};
+
+bool clockwise(Extra e)
+{
+    return e == Extra::CurlClockwiseInFront || e == Extra::CurlClockwiseBehind;
+}
+
+bool inFront(Extra e)
+{
+    return e == Extra::CurlClockwiseInFront || e == Extra::CurlCounterClockwiseInFront;
+}
 
 /// A shaft along the centreline from the anus to arc length `tipAt`, with an
 /// extra shape inserted at `loopAt`, resampled every 2 cm (about the node
@@ -53,7 +75,8 @@ Eigen::Matrix3Xd shaft(double tipAt, double loopAt, Extra extra)
             const Eigen::Vector3d t = geometry::sampleCentreline(c, s).tangent;
             Eigen::Vector2d d(t.x(), t.z());
             d.normalize();
-            const double side = extra == Extra::CurlClockwise ? -1.0 : 1.0;
+            const double side = clockwise(extra) ? -1.0 : 1.0;
+            const double rise = inFront(extra) ? -0.03 : 0.03;  // m along y (+: posterior)
             const Eigen::Vector2d n(-d.y() * side,
                                     d.x() * side);  // d rotated by +-90 deg in the anterior view
             constexpr double R = 0.035;             // m
@@ -68,13 +91,16 @@ Eigen::Matrix3Xd shaft(double tipAt, double loopAt, Extra extra)
                     // clockwise for n = d rotated by +90 deg) and crosses the shaft
                     // leading into it (R > 0.01 m).
                     const Eigen::Vector2d q = (0.01 * u + R * std::sin(u)) * d + R * (1.0 - std::cos(u)) * n;
-                    dense.push_back(p + Eigen::Vector3d(q.x(), 0.0, q.y()));
+                    dense.push_back(p + Eigen::Vector3d(q.x(), rise * u / (2.0 * std::numbers::pi), q.y()));
                 }
             }
-            const Eigen::Vector3d offset = dense.back() - p;
-            for (double s2 = s; s2 <= tipAt; s2 += 0.002) {
+            // The curl ends 2 pi cm ahead along d: the shaft goes on from the
+            // centreline that far ahead, the small offset left fading over 5 cm.
+            const double ahead = extra == Extra::AnteriorBulge ? 0.0 : 0.02 * std::numbers::pi;
+            const Eigen::Vector3d offset = dense.back() - geometry::sampleCentreline(c, s + ahead).point;
+            for (double s2 = s + ahead; s2 <= tipAt; s2 += 0.002) {
                 dense.push_back(geometry::sampleCentreline(c, s2).point +
-                                offset * std::exp(-(s2 - s) / 0.05));
+                                offset * std::exp(-(s2 - s - ahead) / 0.05));
             }
             break;
         }
@@ -130,17 +156,23 @@ TEST_P(Classification, ReadsTheShaftShape)
     EXPECT_EQ(loopName(kind), loopName(c.expected))
         << "excess " << detector.signals().excessShaft << " m in "
         << geometry::segmentName(detector.signals().segment) << ", crossings " << detector.signals().crossings
-        << ", turning " << detector.signals().turning;
+        << ", handedness " << detector.signals().handedness << ", turning " << detector.signals().turning;
 }
 
 INSTANTIATE_TEST_SUITE_P(
     Shapes, Classification,
     ::testing::Values(Case{"straight_to_the_sigmoid", Segment::Sigmoid, Extra::None, LoopKind::None},
                       Case{"straight_to_the_transverse", Segment::Transverse, Extra::None, LoopKind::None},
-                      Case{"alpha", Segment::Sigmoid, Extra::CurlCounterClockwise, LoopKind::Alpha},
-                      Case{"reverse_alpha", Segment::Sigmoid, Extra::CurlClockwise, LoopKind::ReverseAlpha},
+                      Case{"alpha", Segment::Sigmoid, Extra::CurlClockwiseInFront, LoopKind::Alpha},
+                      Case{"reverse_alpha", Segment::Sigmoid, Extra::CurlClockwiseBehind,
+                           LoopKind::ReverseAlpha},
+                      // The handedness types the loop, not the way its projection turns.
+                      Case{"alpha_seen_counter_clockwise", Segment::Sigmoid,
+                           Extra::CurlCounterClockwiseBehind, LoopKind::Alpha},
+                      Case{"reverse_alpha_seen_counter_clockwise", Segment::Sigmoid,
+                           Extra::CurlCounterClockwiseInFront, LoopKind::ReverseAlpha},
                       Case{"n_loop", Segment::Sigmoid, Extra::AnteriorBulge, LoopKind::N},
-                      Case{"deep_transverse", Segment::Transverse, Extra::CurlCounterClockwise,
+                      Case{"deep_transverse", Segment::Transverse, Extra::CurlCounterClockwiseInFront,
                            LoopKind::GammaDeepTransverse}),
     [](const auto& info) { return std::string(info.param.label); });
 
@@ -218,7 +250,7 @@ TEST(LoopDetector, LoopResolvesWithHysteresis)
 {
     LoopDetector detector(anatomy().centreline);
     const double at = segmentMiddle(Segment::Sigmoid);
-    const Eigen::Matrix3Xd looped = shaft(at + 0.3, at, Extra::CurlCounterClockwise);
+    const Eigen::Matrix3Xd looped = shaft(at + 0.3, at, Extra::CurlClockwiseInFront);
     EXPECT_EQ(detector.update(looped, shaftLength(looped)), LoopKind::Alpha);
     const Eigen::Matrix3Xd straight = shaft(at + 0.3, at, Extra::None);
     EXPECT_EQ(detector.update(straight, shaftLength(straight)), LoopKind::None);
@@ -234,8 +266,8 @@ TEST(LoopDetector, ALoopsTypeChangesOnlyOnASteadyNewReading)
     ASSERT_EQ(parameters.typeDwellAnalyses(), kDwell);
     LoopDetector detector(anatomy().centreline, parameters);
     const double at = segmentMiddle(Segment::Sigmoid);
-    const Eigen::Matrix3Xd alpha = shaft(at + 0.3, at, Extra::CurlCounterClockwise);
-    const Eigen::Matrix3Xd reverse = shaft(at + 0.3, at, Extra::CurlClockwise);
+    const Eigen::Matrix3Xd alpha = shaft(at + 0.3, at, Extra::CurlClockwiseInFront);
+    const Eigen::Matrix3Xd reverse = shaft(at + 0.3, at, Extra::CurlClockwiseBehind);
     ASSERT_EQ(detector.update(alpha, shaftLength(alpha)), LoopKind::Alpha);
     for (int k = 0; k < 12; ++k) {
         const bool flicker = k % 2 == 0;
@@ -314,6 +346,63 @@ TEST(LoopDetector, CoronalCrossingsOfAFigureEight)
     }
     EXPECT_EQ(coronalCrossings(eight), 1);
     EXPECT_NEAR(coronalTurning(circle), 2.0 * std::numbers::pi, 0.05);
+}
+
+}  // namespace
+}  // namespace colonosim::procedure
+
+namespace colonosim::procedure {
+namespace {
+
+/// A helix about y (towards the back), `turns` turns of radius 5 cm, drifting
+/// along x so that it is seen side on from the front as a row of curls that
+/// cross themselves; right-handed for pitch > 0.
+Eigen::Matrix3Xd helixAboutY(double pitch)
+{
+    constexpr int kPoints = 400;
+    Eigen::Matrix3Xd h(3, kPoints);
+    for (int k = 0; k < kPoints; ++k) {
+        const double t = 0.05 * k;
+        // (e1, e2, e3) = (z, x, y) is right-handed: cos t e1 + sin t e2 + pitch t e3.
+        h.col(k) = Eigen::Vector3d(0.05 * std::sin(t) + 0.025 * t, pitch * t, 0.05 * std::cos(t));
+    }
+    return h;
+}
+
+TEST(LoopDetector, ACrossingsHandednessIsTheHelixsAndNotItsProjections)
+{
+    for (const double pitch : {0.01, -0.01}) {
+        const std::vector<CoronalCrossing> crossings = coronalCrossingList(helixAboutY(pitch));
+        ASSERT_EQ(crossings.size(), 3U) << "pitch " << pitch;
+        for (const CoronalCrossing& c : crossings) {
+            EXPECT_EQ(c.handedness, pitch > 0.0 ? 1 : -1) << "pitch " << pitch << " at " << c.first;
+            EXPECT_LT(c.first, c.second);
+        }
+    }
+}
+
+// The 66 cm redundant sigmoid crosses itself in the anterior view at rest; a
+// shaft that follows it crosses itself there too, and that crossing is the
+// colon's, not a loop's.
+TEST(LoopDetector, AShaftFollowingAColonThatCrossesItselfHasNoCrossingOfItsOwn)
+{
+    geometry::AnatomyParameters redundant;
+    redundant.sigmoidLength = 0.66;
+    const geometry::ColonAnatomy colon = geometry::buildProceduralColon(redundant);
+    const auto& c = colon.centreline;
+    std::vector<Eigen::Vector3d> nodes;
+    for (double s = 0.0; s <= 1.0; s += 0.02) {
+        nodes.push_back(geometry::sampleCentreline(c, s).point);
+    }
+    Eigen::Matrix3Xd follow(3, static_cast<Eigen::Index>(nodes.size()));
+    for (size_t k = 0; k < nodes.size(); ++k) {
+        follow.col(static_cast<Eigen::Index>(k)) = nodes[k];
+    }
+    ASSERT_GE(coronalCrossings(follow), 1) << "the redundant sigmoid crosses itself at rest";
+    LoopDetector detector(c);
+    detector.update(follow, shaftLength(follow));
+    EXPECT_EQ(detector.signals().crossings, 0);
+    EXPECT_EQ(detector.current(), LoopKind::None);
 }
 
 }  // namespace
