@@ -78,6 +78,11 @@ constexpr double kTipLags = 2.0;
 /// is kept short of the flexure: 9 N or 12 N from the start pushed the tip
 /// of generated patient 1 out through its sigmoid (176 steps more than a
 /// scope diameter into the wall by 20 s, none at 8 N).
+double reductionTurn(LoopKind kind)
+{
+    return kind == LoopKind::ReverseAlpha ? 1.0 : -1.0;
+}
+
 OperatorStyle expertStyle()
 {
     return {0.03, 0.01, 8.0, 12.0, true, 2.0, 0.5, true, 0.1};
@@ -255,10 +260,11 @@ InputSample ScriptedOperator::next(const ProcedureLoop& loop)
         if (m_style.aimsBeforeInserting && !letDialsGo(2.0 * dt)) {
             break;
         }
-        // Withdraw with clockwise torque (clockwise seen from the operator: negative rotation).
+        // Withdraw with clockwise torque (clockwise seen from the operator:
+        // negative rotation), counter-clockwise from a reverse alpha.
         m_input.insertion = std::max(m_input.insertion - 0.5 * m_style.insertSpeed * dt, 0.0);
         if (m_style.reducesLoops) {
-            m_input.rotation -= 0.5 * dt;
+            m_input.rotation += reductionTurn(loop.loops().current()) * 0.5 * dt;
         }
         if (m_input.insertion <= m_reduceUntil &&
             (loop.loops().current() == LoopKind::None || m_input.insertion <= m_reduceFloor)) {

@@ -13,7 +13,9 @@
 ///     following it (insertion over tip advance above 2, the clinical
 ///     warning sign; a loop the tip still advances through is let be),
 ///     straightens the tip and withdraws with clockwise torque (the standard
-///     loop reduction) 3 cm and on until the loop is out, 15 cm at most,
+///     loop reduction; counter-clockwise while the loop is read as a reverse
+///     alpha, which clockwise torque tightens) 3 cm and on until the loop is
+///     out, 15 cm at most,
 ///     before going on; aims a lumen that lies behind the folded tip by more
 ///     bend towards it; when a dial is at its stop and the scope no longer
 ///     gets on, pulls back 4 cm and re-approaches, and if that fails at the
@@ -68,6 +70,11 @@ struct OperatorStyle {
 /// Angular offset of the lumen from the view's centre within which an
 /// operator that aims before inserting feeds the scope, rad.
 inline constexpr double kAimedWithin = 0.35;
+
+/// The way a loop reducer turns the shaft while withdrawing from a loop of
+/// `kind`, seen from the operator: -1 clockwise (the standard reduction), +1
+/// counter-clockwise for a reverse alpha (reference/clinical-assessment.md).
+[[nodiscard]] double reductionTurn(LoopKind kind);
 
 [[nodiscard]] OperatorStyle expertStyle();
 [[nodiscard]] OperatorStyle noviceStyle();

@@ -514,3 +514,15 @@ TEST(ProcedureLoop, SweepLimitsOutsideTheirRangeAreRefusedByName)
 }
 
 }  // namespace
+
+// reference/clinical-assessment.md: loops are reduced by withdrawing with
+// clockwise torque, but a reverse alpha needs counter-clockwise torque.
+TEST(ScriptedOperator, ReducesEveryLoopClockwiseButAReverseAlphaCounterClockwise)
+{
+    using procedure::LoopKind;
+    for (const LoopKind kind : {LoopKind::None, LoopKind::N, LoopKind::Alpha, LoopKind::GammaDeepTransverse,
+                                LoopKind::ReverseSplenic}) {
+        EXPECT_EQ(procedure::reductionTurn(kind), -1.0) << procedure::loopName(kind);
+    }
+    EXPECT_EQ(procedure::reductionTurn(LoopKind::ReverseAlpha), 1.0);
+}
