@@ -136,15 +136,17 @@ InputSample ScriptedOperator::next(const ProcedureLoop& loop)
             m_input.dialUpDown = std::clamp(m_input.dialUpDown + follow * up, -kUpDownStop, kUpDownStop);
             m_input.dialLeftRight = std::clamp(m_input.dialLeftRight + follow * left, -kDialStop, kDialStop);
             if (m_phase == Phase::Insert || m_phase == Phase::SlideBy) {
-                // Torque steering: turn the shaft by dTurn and counter-turn the
-                // deflection in the tip's frame, so the bend keeps pointing
-                // where it does while it moves onto the up/down dial.
+                // Torque steering: turn the shaft by dTurn (about the viewing
+                // direction, clockwise seen from the operator: the input's
+                // rotation is counter-clockwise, so it takes -dTurn) and
+                // counter-turn the deflection in the tip's frame, so the bend
+                // keeps pointing where it does while it moves onto the up/down dial.
                 const double turn = -kTorqueSteering * m_input.dialLeftRight * dt;
                 const double c = std::cos(turn);
                 const double s = std::sin(turn);
                 const double lr = c * m_input.dialLeftRight + s * m_input.dialUpDown;
                 const double ud = -s * m_input.dialLeftRight + c * m_input.dialUpDown;
-                m_input.rotation += turn;
+                m_input.rotation -= turn;
                 m_input.dialLeftRight = std::clamp(lr, -kDialStop, kDialStop);
                 m_input.dialUpDown = std::clamp(ud, -kUpDownStop, kUpDownStop);
             }
@@ -273,7 +275,7 @@ InputSample ScriptedOperator::next(const ProcedureLoop& loop)
         break;
     case Phase::Withdraw:
         m_input.insertion = std::max(m_input.insertion - m_style.withdrawSpeed * dt, 0.0);
-        m_input.rotation += 0.3 * std::sin(0.5 * loop.time()) * dt;  // sweep the view
+        m_input.rotation -= 0.3 * std::sin(0.5 * loop.time()) * dt;  // sweep the view, clockwise first
         m_finished = m_input.insertion <= 0.05;
         break;
     }

@@ -203,13 +203,16 @@ HandleLoad Colonoscope::handleLoad() const
 {
     const BaseLoad base = baseLoad(m_rod);
     const Eigen::Vector3d axis = m_entryFrame.col(2);
-    return {base.force, base.moment, base.force.dot(axis), base.moment.dot(axis)};
+    return {base.force, base.moment, base.force.dot(axis), -base.moment.dot(axis)};
 }
 
 void Colonoscope::updateBase()
 {
     m_rod.basePosition = m_anus;
-    m_rod.baseFrame = m_entryFrame * rotationFromVector(Eigen::Vector3d(0.0, 0.0, m_shaftRotation));
+    // Counter-clockwise seen from the operator, who looks along the insertion
+    // direction: a rotation about -z (a positive one about +z is clockwise,
+    // as a right-handed screw turned clockwise advances).
+    m_rod.baseFrame = m_entryFrame * rotationFromVector(Eigen::Vector3d(0.0, 0.0, -m_shaftRotation));
     m_rod.stubLength = std::max(0.0, m_insertion - (m_rod.numNodes() - 1) * m_materialElementLength);
     updateDials();
     m_rod.rebuild();

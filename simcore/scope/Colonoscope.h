@@ -55,8 +55,10 @@ struct TipPose {
 struct HandleLoad {
     Eigen::Vector3d force = Eigen::Vector3d::Zero();   ///< sum of loads on the scope, world, N
     Eigen::Vector3d moment = Eigen::Vector3d::Zero();  ///< about the anus, world, N m
-    double axialForce = 0.0;   ///< force . insertion direction, N (negative resists insertion)
-    double axialTorque = 0.0;  ///< moment . insertion direction, N m
+    double axialForce = 0.0;  ///< force . insertion direction, N (negative resists insertion)
+    /// Moment about the shaft, counter-clockwise seen from the operator
+    /// (-moment . insertion direction, the convention of setShaftRotation()), N m.
+    double axialTorque = 0.0;
 };
 
 class Colonoscope {
@@ -70,7 +72,9 @@ public:
                        const Eigen::Vector3d& up);
     /// Inserted length in [0, workingLength], m.
     void setInsertion(double length);
-    /// Shaft rotation at the handle about the insertion direction, rad, |angle| <= 1000.
+    /// Shaft rotation at the handle, rad, |angle| <= 1000: counter-clockwise
+    /// seen from the operator looking along the insertion direction (a
+    /// rotation about the backward axis).
     void setShaftRotation(double angle);
     /// Dial angles, rad; clamped to the clinical limits; non-finite or beyond 2 pi refused.
     void setDials(double upDown, double leftRight);

@@ -157,11 +157,15 @@ TEST(Adhesions, AnInsertionPushedAgainstAFixedAdhesionStaysStable)
 // redundant sigmoid (66 cm, as in incomplete examinations; its mesocolon
 // 8.9 cm, one SD above the mean) takes the novice's insertion for 15 s; then
 // the tip is hooked with the up/down dial at its stop and the shaft pushed on
-// at 5 cm/s while it is turned counter-clockwise at 1 rad/s for 7 s, which
+// at 5 cm/s while it is turned clockwise (seen from the operator) at 1 rad/s
+// for 7 s, which
 // takes the shaft's coronal turning in the sigmoid more than a whole turn
 // away from the colon's rest path over the same stretch; then, with the
 // insertion held,
-// the handle is twisted a whole turn clockwise in 1 s and back in 1 s.
+// the handle is twisted a whole turn counter-clockwise in 1 s and back in
+// 1 s. (The turns were labelled the other way round until the shaft's
+// rotation took the operator's convention, README "Which way the shaft
+// turns"; the turns themselves, and so the figures below, are unchanged.)
 // Asserted: everything stays finite; the tissue's step check engages in few
 // steps; while the shaft is twisted the tip stays inside the lumen but
 // for a few milliseconds, and it is inside at the end; the handle's force and
@@ -234,11 +238,11 @@ TEST(HardCases, AHookedShaftPushedWithTorqueInARedundantSigmoidTwistedHardStaysS
             input = held;
             input.dialUpDown = 3.0;  // beyond the clinical stop: clamped there
             input.insertion = held.insertion + 0.05 * curl * dt;
-            input.rotation = held.rotation + 1.0 * curl * dt;
+            input.rotation = held.rotation - 1.0 * curl * dt;  // clockwise seen from the operator
             const int twist = s - kNovice - kCurl;
             if (twist > 0) {
                 const double turn = 2.0 * std::numbers::pi / kTwist;  // rad per step
-                input.rotation -= turn * (twist <= kTwist ? twist : 2 * kTwist - twist);
+                input.rotation += turn * (twist <= kTwist ? twist : 2 * kTwist - twist);
             }
         }
         const long triesBefore = loop.tissue().rejectedSteps();

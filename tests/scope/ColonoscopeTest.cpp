@@ -125,14 +125,16 @@ TEST(Colonoscope, HandleRotationReachesTheTipThroughTorsion)
 {
     const double insertion = 1.0;
     Colonoscope scope = insertedScope(insertion);
+    // Inserted along +x: counter-clockwise seen from the operator, who looks
+    // along +x, is a rotation about -x.
     scope.setShaftRotation(0.5);
     const double gj = ScopeParameters{}.torsionalRigidity;
     const double inserted = insertion;  // the whole inserted length is elastic, the stub included
-    const double hold = -0.1;           // N m about +x
-    scope.setNodeTorque(scope.numInsertedNodes() - 1, Eigen::Vector3d(hold, 0.0, 0.0));
+    const double hold = -0.1;           // N m, counter-clockwise seen from the operator (about -x)
+    scope.setNodeTorque(scope.numInsertedNodes() - 1, Eigen::Vector3d(-hold, 0.0, 0.0));
     scope.step();
     const Eigen::Matrix3d tip = scope.tipPose().rotation;
-    const double tipTwist = std::atan2(tip(2, 1), tip(1, 1));  // up column turning about +x
+    const double tipTwist = -std::atan2(tip(2, 1), tip(1, 1));  // up column turning about -x
     EXPECT_NEAR(tipTwist, 0.5 + hold * inserted / gj, 1e-9);
     EXPECT_NEAR(scope.handleLoad().axialTorque, hold, 1e-12);
 }
