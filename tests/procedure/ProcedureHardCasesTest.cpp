@@ -172,7 +172,8 @@ TEST(Adhesions, AnInsertionPushedAgainstAFixedAdhesionStaysStable)
 // torque stay within the haptic device's limits; and the shaft's shape
 // really left the colon's rest path by more than a turn. Measured: no step
 // check engaged, 14.7 N at most, the turning beyond the path over the
-// insertion tube 6.50 rad at most (9.01 with the bending section, which the
+// insertion tube 6.59 rad at most (read over the left colon's shaft; 6.50
+// over the sigmoid's alone before that; 9.01 with the bending section, which the
 // loop detector leaves out), no step outside while twisted, the tip
 // 0.17 mm in at the end. The handle's torque stays within the device's 1 N m
 // while the novice inserts; from the curl on it is bounded by the torque of
