@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <vector>
 
 namespace colonosim::procedure {
 
@@ -35,6 +36,14 @@ Eigen::Vector2d coronal(const Eigen::Vector3d& p)
 double cross2(const Eigen::Vector2d& a, const Eigen::Vector2d& b)
 {
     return a.x() * b.y() - a.y() * b.x();
+}
+
+/// values interpolated at `at`, a node index plus the fraction of its segment.
+double valueAt(const std::vector<double>& values, double at)
+{
+    const auto k = static_cast<size_t>(at);
+    const double f = at - std::floor(at);
+    return k + 1 < values.size() ? (1.0 - f) * values[k] + f * values[k + 1] : values[k];
 }
 
 /// Where segments ab and cd cross in the plane: the fractions along each, or
@@ -248,11 +257,6 @@ LoopKind LoopDetector::update(const Eigen::Matrix3Xd& shaft, double insertion,
         const double from = s[static_cast<size_t>(first)];
         const double to = s[static_cast<size_t>(last)];
         const Eigen::Matrix3Xd path = colonPath(from, to);
-        const auto nodeArc = [&](double at) {
-            const auto k = static_cast<size_t>(first) + static_cast<size_t>(at);
-            const double f = at - std::floor(at);
-            return k + 1 < s.size() ? (1.0 - f) * s[k] + f * s[k + 1] : s[k];
-        };
         const auto pathArc = [&](double at) {
             return from + (to - from) * at / static_cast<double>(std::max<Eigen::Index>(1, path.cols() - 1));
         };
@@ -268,17 +272,13 @@ LoopKind LoopDetector::update(const Eigen::Matrix3Xd& shaft, double insertion,
             along[static_cast<size_t>(k)] =
                 along[static_cast<size_t>(k - 1)] + (part.col(k) - part.col(k - 1)).norm();
         }
-        const auto alongAt = [&](double at) {
-            const auto k = static_cast<size_t>(at);
-            const double f = at - std::floor(at);
-            return k + 1 < along.size() ? (1.0 - f) * along[k] + f * along[k + 1] : along[k];
-        };
         for (const CoronalCrossing& c : own) {
-            if (alongAt(c.second) - alongAt(c.first) < m_parameters.threshold) {
+            if (valueAt(along, c.second) - valueAt(along, c.first) < m_parameters.threshold) {
                 continue;
             }
-            const double a = nodeArc(c.first);
-            const double b = nodeArc(c.second);
+            // Where the two strands are along the colon (the part starts at node `first`).
+            const double a = valueAt(s, static_cast<double>(first) + c.first);
+            const double b = valueAt(s, static_cast<double>(first) + c.second);
             const bool colons = std::any_of(rest.begin(), rest.end(), [&](const CoronalCrossing& r) {
                 const double ra = pathArc(r.first);
                 const double rb = pathArc(r.second);

@@ -45,9 +45,7 @@ struct PushOutcome {
 PushOutcome pushIntoRedundantSigmoid(double haustralAxialRatio)
 {
     constexpr int kSteps = 18000;
-    geometry::AnatomyParameters redundant;
-    redundant.sigmoidLength = 0.66;
-    redundant.sigmoidMesenteryHeight = 0.089;
+    const geometry::AnatomyParameters redundant = looptest::redundantSigmoid();
     const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(redundant);
     procedure::ProcedureSettings settings;
     settings.tissue.haustralAxialRatio = haustralAxialRatio;

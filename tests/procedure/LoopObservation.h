@@ -21,6 +21,16 @@ inline const geometry::ColonAnatomy& defaultColon()
     return anatomy;
 }
 
+/// The redundant sigmoid of the loop tests: 66 cm, as in incomplete
+/// examinations, its mesocolon 8.9 cm (one SD above the mean).
+inline geometry::AnatomyParameters redundantSigmoid()
+{
+    geometry::AnatomyParameters redundant;
+    redundant.sigmoidLength = 0.66;
+    redundant.sigmoidMesenteryHeight = 0.089;
+    return redundant;
+}
+
 struct RunSummary {
     double peakHandleForce = 0.0;  ///< N
     bool finite = true;            ///< every output, scope node and wall node stayed finite

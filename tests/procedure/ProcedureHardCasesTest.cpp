@@ -207,9 +207,7 @@ TEST(HardCases, AHookedShaftPushedWithTorqueInARedundantSigmoidTwistedHardStaysS
     constexpr int kStepsOutside = 50;     // steps with the tip more than a scope diameter in
     constexpr double kForceLimit = 25.0;  // N at the handle: the haptic device's limit
     constexpr double kTorqueLimit = 1.0;  // N m at the handle: the CSIRO device's rotational limit
-    geometry::AnatomyParameters redundant;
-    redundant.sigmoidLength = 0.66;
-    redundant.sigmoidMesenteryHeight = 0.089;
+    const geometry::AnatomyParameters redundant = looptest::redundantSigmoid();
     const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(redundant);
     const ProcedureSettings settings;
     ProcedureLoop loop(anatomy, settings);

@@ -18,6 +18,7 @@
 #include "simcore/geometry/ProceduralColon.h"
 #include "simcore/procedure/Operator.h"
 #include "simcore/procedure/ProcedureLoop.h"
+#include "simcore/scope/ScopeParameters.h"
 #include "tests/procedure/LoopObservation.h"
 
 #include <gtest/gtest.h>
@@ -30,9 +31,9 @@ namespace {
 
 using namespace colonosim;
 
-constexpr double kThreshold = 0.08;       // m, loops.threshold
-constexpr double kOperatorPeak = 43.0;    // N, real operators' peak push (Appleyard et al. 2000)
-constexpr double kScopeDiameter = 0.013;  // m
+constexpr double kThreshold = 0.08;     // m, loops.threshold
+constexpr double kOperatorPeak = 43.0;  // N, real operators' peak push (Appleyard et al. 2000)
+const double kScopeDiameter = scope::ScopeParameters{}.outerDiameter;  // m
 constexpr int kStepsDeep =
     50;  // steps with a contact point more than a scope diameter in (as HaustralWall's)
 
@@ -50,9 +51,7 @@ struct PushOutcome {
 PushOutcome pushIntoRedundantSigmoid(double rootLength)
 {
     constexpr int kSteps = 22000;
-    geometry::AnatomyParameters redundant;
-    redundant.sigmoidLength = 0.66;
-    redundant.sigmoidMesenteryHeight = 0.089;
+    geometry::AnatomyParameters redundant = looptest::redundantSigmoid();
     redundant.sigmoidRootLength = rootLength;
     const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(redundant);
     procedure::ProcedureSettings settings;
