@@ -5,7 +5,7 @@ namespace colonosim::geometry {
 namespace {
 using P = AnatomyParameters;
 using F = params::Field<AnatomyParameters>;
-constexpr std::array<F, 29> kFields{{
+constexpr std::array<F, 30> kFields{{
     {&P::rectumLengthSpec, &P::rectumLength},
     {&P::sigmoidLengthSpec, &P::sigmoidLength},
     {&P::descendingLengthSpec, &P::descendingLength},
@@ -28,6 +28,7 @@ constexpr std::array<F, 29> kFields{{
     {&P::sigmoidMesenteryHeightSpec, &P::sigmoidMesenteryHeight},
     {&P::mobileColonMesenteryHeightSpec, &P::mobileColonMesenteryHeight},
     {&P::sigmoidRootLengthSpec, &P::sigmoidRootLength},
+    {&P::sigmoidSweepSpec, &P::sigmoidSweep},
     {&P::haustralFoldDepthSpec, &P::haustralFoldDepth},
     {&P::haustralFoldSpacingSpec, &P::haustralFoldSpacing},
     {&P::taeniaDepthSpec, &P::taeniaDepth},

@@ -156,6 +156,18 @@ struct AnatomyParameters {
         "(the anatomy of alpha looping and sigmoid volvulus; a short or fixed sigmoid mesocolon allows no "
         "alpha or spiral loop, Cotton and Williams); 0.17 m, the chord of the 66 cm redundant sigmoid, "
         "forms a crossed loop under a push (tests/procedure/SigmoidLoopTest.cpp)"};
+    static constexpr Spec sigmoidSweepSpec{
+        "sigmoidSweep",
+        "1",
+        1.0,
+        -1.0,
+        1.0,
+        "sideways swing of the sigmoid loop, seen from the front: +1 swings first to the patient's right, "
+        "over the top and down to the left (clockwise on an anterior view); -1 the mirror image, first "
+        "to the left (counter-clockwise); values between narrow the swing",
+        "assumption: the sigmoid's position and configuration vary widely between people (population-"
+        "statistics.md §6, mobility); which way a redundant loop turns sets the handedness of a loop "
+        "pushed into it (tests/procedure/SigmoidLoopTest.cpp)"};
 
     // Haustral folds and taeniae (visual mesh only).
     static constexpr Spec haustralFoldDepthSpec{
@@ -237,6 +249,7 @@ struct AnatomyParameters {
     double sigmoidMesenteryHeight = sigmoidMesenteryHeightSpec.defaultValue;
     double mobileColonMesenteryHeight = mobileColonMesenteryHeightSpec.defaultValue;
     double sigmoidRootLength = sigmoidRootLengthSpec.defaultValue;
+    double sigmoidSweep = sigmoidSweepSpec.defaultValue;
 
     double haustralFoldDepth = haustralFoldDepthSpec.defaultValue;
     double haustralFoldSpacing = haustralFoldSpacingSpec.defaultValue;

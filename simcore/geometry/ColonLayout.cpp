@@ -92,8 +92,12 @@ ControlPolygon buildControlPolygon(const AnatomyParameters& params,
         if (span == kNumSpans)
             break;
         for (const Bend& bend : shapes()[i]) {
+            Eigen::Vector3d direction = bend.direction;
+            if (span == kSigmoidSpan) {
+                direction.x() *= params.sigmoidSweep;
+            }
             poly.points.push_back((1.0 - bend.t) * anchors[i] + bend.t * anchors[i + 1] +
-                                  amplitude[i] * bend.direction);
+                                  amplitude[i] * direction);
             poly.lumenRadius.push_back(spanRadius(span));
         }
     }

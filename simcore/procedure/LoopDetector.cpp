@@ -253,7 +253,7 @@ LoopKind LoopDetector::update(const Eigen::Matrix3Xd& shaft, double insertion,
         const Eigen::Matrix3Xd part = shaft.middleCols(first, last - first + 1);
         // Relative to the colon's own path over the same stretch: a shaft that
         // merely follows a sigmoid which crosses itself in the anterior view
-        // crosses where the colon does, and is not looped.
+        // crosses where the colon does; that crossing is shared, not the loop's own.
         const double from = s[static_cast<size_t>(first)];
         const double to = s[static_cast<size_t>(last)];
         const Eigen::Matrix3Xd path = colonPath(from, to);
@@ -285,7 +285,10 @@ LoopKind LoopDetector::update(const Eigen::Matrix3Xd& shaft, double insertion,
                 return (std::abs(a - ra) <= match && std::abs(b - rb) <= match) ||
                        (std::abs(a - rb) <= match && std::abs(b - ra) <= match);
             });
-            if (!colons) {
+            if (colons) {
+                ++signals.sharedCrossings;
+                signals.sharedHandedness += c.handedness;
+            } else {
                 ++signals.crossings;
                 signals.handedness += c.handedness;
             }
@@ -341,11 +344,15 @@ LoopKind LoopDetector::classify(const LoopSignals& signals)
     switch (signals.segment) {
     case Segment::Rectum:
     case Segment::Sigmoid:
-    case Segment::Descending:
-        if (!crossed || signals.handedness == 0) {
+    case Segment::Descending: {
+        // The loop's own crossings type it; a loop with none, along a colon
+        // that crosses itself at rest, has the shaft crossing there.
+        const int handedness = crossed ? signals.handedness : signals.sharedHandedness;
+        if (handedness == 0) {
             return LoopKind::N;
         }
-        return signals.handedness < 0 ? LoopKind::Alpha : LoopKind::ReverseAlpha;
+        return handedness < 0 ? LoopKind::Alpha : LoopKind::ReverseAlpha;
+    }
     case Segment::SplenicFlexure: return crossed ? LoopKind::ReverseSplenic : LoopKind::GammaDeepTransverse;
     default: return LoopKind::GammaDeepTransverse;
     }

@@ -157,6 +157,13 @@ struct LoopSignals {
     int crossings = 0;
     /// Their handedness summed: +1 for each right-handed crossing, -1 for each left-handed.
     int handedness = 0;
+    /// Coronal self-crossings of the looped shaft where the colon's path at rest
+    /// crosses itself too (a sigmoid curled into an alpha or reverse alpha at
+    /// rest, the shaft following it), and their handedness summed. A loop
+    /// with no crossing of its own is typed by these: the shaft's shape is
+    /// what shape imaging shows and what sets the way to turn it out.
+    int sharedCrossings = 0;
+    int sharedHandedness = 0;
     /// Signed coronal turning of the looped shaft beyond the colon's path over
     /// the same stretch, rad (+ = counter-clockwise); reported, not used to type a loop.
     double turning = 0.0;

@@ -34,7 +34,7 @@ TEST(AnatomyParameters, RangesSpanThePopulation)
         }
     }
     EXPECT_EQ(names.size(), AnatomyParameters::fields().size()) << "a field is declared twice";
-    EXPECT_EQ(names.size(), 29u);
+    EXPECT_EQ(names.size(), 30u);
     EXPECT_LE(minTotal, 1.10);
     EXPECT_GE(maxTotal, 2.10);
 }

@@ -402,7 +402,46 @@ TEST(LoopDetector, AShaftFollowingAColonThatCrossesItselfHasNoCrossingOfItsOwn)
     LoopDetector detector(c);
     detector.update(follow, shaftLength(follow));
     EXPECT_EQ(detector.signals().crossings, 0);
+    EXPECT_GE(detector.signals().sharedCrossings, 1);
     EXPECT_EQ(detector.current(), LoopKind::None);
+}
+
+/// The shaft laid along the rest path of the redundant sigmoid swept either
+/// way, with 12 cm of shaft stored behind its tip (above the 8 cm threshold).
+LoopDetector storedAlongRedundantSigmoid(double sweep, geometry::ColonAnatomy& colon)
+{
+    geometry::AnatomyParameters redundant;
+    redundant.sigmoidLength = 0.66;
+    redundant.sigmoidSweep = sweep;
+    colon = geometry::buildProceduralColon(redundant);
+    Eigen::Matrix3Xd follow(3, 51);
+    for (Eigen::Index k = 0; k < follow.cols(); ++k) {
+        follow.col(k) = geometry::sampleCentreline(colon.centreline, 0.02 * static_cast<double>(k)).point;
+    }
+    LoopDetector detector(colon.centreline);
+    detector.update(follow, shaftLength(follow) + 0.12);
+    return detector;
+}
+
+TEST(LoopDetector, ALoopAlongAColonCrossedAtRestIsTypedByTheShaftsCrossingThere)
+{
+    // Swept first to the patient's left (counter-clockwise on the anterior
+    // view), the sigmoid's limbs cross with the one that leaves it behind:
+    // a left-handed crossing, an alpha. Swept to the right, the sigmoid's
+    // rest path curls the other way where it meets the descending colon.
+    geometry::ColonAnatomy left;
+    const LoopDetector toTheLeft = storedAlongRedundantSigmoid(-1.0, left);
+    EXPECT_EQ(toTheLeft.signals().crossings, 0) << "no crossing of its own";
+    EXPECT_GE(toTheLeft.signals().sharedCrossings, 1);
+    EXPECT_LT(toTheLeft.signals().sharedHandedness, 0);
+    EXPECT_EQ(toTheLeft.current(), LoopKind::Alpha);
+
+    geometry::ColonAnatomy right;
+    const LoopDetector toTheRight = storedAlongRedundantSigmoid(1.0, right);
+    EXPECT_EQ(toTheRight.signals().crossings, 0);
+    EXPECT_GE(toTheRight.signals().sharedCrossings, 1);
+    EXPECT_GT(toTheRight.signals().sharedHandedness, 0);
+    EXPECT_EQ(toTheRight.current(), LoopKind::ReverseAlpha);
 }
 
 }  // namespace

@@ -11,9 +11,15 @@
 //     sigmoid passing behind the shaft that enters it (right-handed);
 //   - from a point behind each ring (the default): the shaft bows the
 //     sigmoid into an N loop, and where it crosses itself it crosses where
-//     the colon's own path does (the redundant sigmoid's curl at rest), so
-//     no crossing of a loop is read.
-// Labelled slow: two 22 s procedures, one per test.
+//     the colon's own path does (the redundant sigmoid's curl at rest, right-
+//     handed): no crossing of the loop's own, and the loop is typed by the
+//     shaft's crossing there, a reverse alpha.
+// And the same sigmoid swept the other way (anatomy.sigmoidSweep -1: first
+// to the patient's left, counter-clockwise on an anterior view), on the
+// 17 cm root: at rest its limbs already cross, left-handed (the limb that
+// leaves the sigmoid behind); the push stores shaft in it, and the loop is
+// typed by the shaft's crossing there: an alpha.
+// Labelled slow: three 22 s procedures, one per test.
 
 #include "simcore/geometry/ProceduralColon.h"
 #include "simcore/procedure/Operator.h"
@@ -42,22 +48,40 @@ struct PushOutcome {
     double crossedAt = -1.0;             ///< s: the first analysis with a loop's own crossing; < 0: none
     int mostCrossings = 0;               ///< the most own crossings in one analysis
     int handednessThen = 0;              ///< their handedness at the first crossed reading
-    double mostStored = 0.0;             ///< m, the most excess or stored shaft
-    double deepest = 0.0;                ///< m, the deepest contact point
-    int stepsDeep = 0;                   ///< steps with a contact point more than a scope diameter in
+    double crossedTypeAt = -1.0;         ///< s: when an alpha or reverse alpha was first held
+    double sharedAt = -1.0;        ///< s: the first analysis with a crossing shared with the colon at rest
+    int mostShared = 0;            ///< the most crossings shared with the colon at rest in one analysis
+    int sharedHandednessThen = 0;  ///< their handedness at the first reading with one
+    double mostStored = 0.0;       ///< m, the most excess or stored shaft
+    double deepest = 0.0;          ///< m, the deepest contact point
+    int stepsDeep = 0;             ///< steps with a contact point more than a scope diameter in
     looptest::RunSummary summary;
 };
 
-PushOutcome pushIntoRedundantSigmoid(double rootLength)
+/// The redundant sigmoid hung from a root `rootLength` long (0: behind each
+/// ring) and swept `sweep` (anatomy.sigmoidSweep).
+geometry::ColonAnatomy redundantSigmoidColon(double rootLength, double sweep)
 {
-    constexpr int kSteps = 22000;
     geometry::AnatomyParameters redundant = looptest::redundantSigmoid();
     redundant.sigmoidRootLength = rootLength;
-    const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(redundant);
+    redundant.sigmoidSweep = sweep;
+    return geometry::buildProceduralColon(redundant);
+}
+
+/// The haustrated wall and the step guard at 10 mm.
+procedure::ProcedureSettings haustratedAndGuarded()
+{
     procedure::ProcedureSettings settings;
     settings.tissue.haustralAxialRatio = 0.07;
     settings.scope.maxNodeStep = 0.01;
-    procedure::ProcedureLoop loop(anatomy, settings);
+    return settings;
+}
+
+PushOutcome pushIntoRedundantSigmoid(double rootLength, double sweep = 1.0)
+{
+    constexpr int kSteps = 22000;
+    const geometry::ColonAnatomy anatomy = redundantSigmoidColon(rootLength, sweep);
+    procedure::ProcedureLoop loop(anatomy, haustratedAndGuarded());
     procedure::ScriptedOperator novice(procedure::noviceStyle());
     PushOutcome outcome;
     for (int s = 0; s < kSteps; ++s) {
@@ -65,12 +89,22 @@ PushOutcome pushIntoRedundantSigmoid(double rootLength)
         looptest::observe(loop, outcome.summary);
         const procedure::LoopSignals& signals = loop.loops().signals();
         outcome.read.insert(loop.loops().current());
+        const procedure::LoopKind held = loop.loops().current();
+        if ((held == procedure::LoopKind::Alpha || held == procedure::LoopKind::ReverseAlpha) &&
+            outcome.crossedTypeAt < 0.0) {
+            outcome.crossedTypeAt = loop.time();
+        }
         outcome.mostStored = std::max({outcome.mostStored, signals.excessShaft, signals.storedShaft});
         if (signals.crossings > 0 && outcome.crossedAt < 0.0) {
             outcome.crossedAt = loop.time();
             outcome.handednessThen = signals.handedness;
         }
         outcome.mostCrossings = std::max(outcome.mostCrossings, signals.crossings);
+        if (signals.sharedCrossings > 0 && outcome.sharedAt < 0.0) {
+            outcome.sharedAt = loop.time();
+            outcome.sharedHandednessThen = signals.sharedHandedness;
+        }
+        outcome.mostShared = std::max(outcome.mostShared, signals.sharedCrossings);
         double deepest = 0.0;
         for (const contact::LumenNodeContact& c : loop.lumen().contacts()) {
             deepest = std::max(deepest, c.depth);
@@ -86,6 +120,10 @@ void record(const PushOutcome& o)
     ::testing::Test::RecordProperty("crossed_at_s", std::to_string(o.crossedAt));
     ::testing::Test::RecordProperty("most_crossings", std::to_string(o.mostCrossings));
     ::testing::Test::RecordProperty("handedness_then", std::to_string(o.handednessThen));
+    ::testing::Test::RecordProperty("shared_at_s", std::to_string(o.sharedAt));
+    ::testing::Test::RecordProperty("crossed_type_at_s", std::to_string(o.crossedTypeAt));
+    ::testing::Test::RecordProperty("most_shared_crossings", std::to_string(o.mostShared));
+    ::testing::Test::RecordProperty("shared_handedness_then", std::to_string(o.sharedHandednessThen));
     ::testing::Test::RecordProperty("most_stored_m", std::to_string(o.mostStored));
     ::testing::Test::RecordProperty("deepest_mm", std::to_string(o.deepest * 1e3));
     ::testing::Test::RecordProperty("steps_deep", std::to_string(o.stepsDeep));
@@ -97,32 +135,107 @@ void record(const PushOutcome& o)
     ::testing::Test::RecordProperty("loops_read", kinds);
 }
 
-TEST(SigmoidLoop, ASigmoidOnANarrowRootSwingsIntoACrossedLoopReadAsAReverseAlpha)
+/// Records the push's figures and checks what every push here must show: a
+/// finite run storing a loop's worth of shaft, held inside the wall, under a
+/// real operator's peak push.
+void recordAStableLoop(const PushOutcome& o)
 {
-    const PushOutcome o = pushIntoRedundantSigmoid(0.17);
     record(o);
     EXPECT_TRUE(o.summary.finite);
     EXPECT_GT(o.mostStored, kThreshold);
-    EXPECT_GT(o.crossedAt, 0.0) << "the shaft crossed itself where the colon at rest does not";
-    EXPECT_GT(o.handednessThen, 0) << "right-handed: the shaft leaving the sigmoid passes behind";
-    EXPECT_TRUE(o.read.count(procedure::LoopKind::ReverseAlpha) == 1);
-    EXPECT_TRUE(o.read.count(procedure::LoopKind::Alpha) == 0);
     EXPECT_LT(o.stepsDeep, kStepsDeep);
     EXPECT_LT(o.summary.peakHandleForce, kOperatorPeak);
 }
 
-TEST(SigmoidLoop, ASigmoidHungBehindEachRingBowsIntoAnNLoopWithoutACrossingOfItsOwn)
+TEST(SigmoidLoop, ASigmoidOnANarrowRootSwingsIntoACrossedLoopReadAsAReverseAlpha)
+{
+    const PushOutcome o = pushIntoRedundantSigmoid(0.17);
+    recordAStableLoop(o);
+    EXPECT_GT(o.crossedAt, 0.0) << "the shaft crossed itself where the colon at rest does not";
+    EXPECT_GT(o.handednessThen, 0) << "right-handed: the shaft leaving the sigmoid passes behind";
+    EXPECT_TRUE(o.read.count(procedure::LoopKind::ReverseAlpha) == 1);
+    EXPECT_TRUE(o.read.count(procedure::LoopKind::Alpha) == 0);
+}
+
+TEST(SigmoidLoop, ASigmoidHungBehindEachRingBowsIntoALoopThatCrossesOnlyWhereTheColonDoes)
 {
     const PushOutcome o = pushIntoRedundantSigmoid(0.0);
-    record(o);
-    EXPECT_TRUE(o.summary.finite);
-    EXPECT_GT(o.mostStored, kThreshold);
-    EXPECT_TRUE(o.read.count(procedure::LoopKind::N) == 1);
+    recordAStableLoop(o);
+    EXPECT_TRUE(o.read.count(procedure::LoopKind::N) == 1) << "bowed before its shaft crossed";
     EXPECT_EQ(o.mostCrossings, 0);
+    EXPECT_GE(o.mostShared, 1) << "the shaft crosses itself where the sigmoid's curl at rest does";
+    EXPECT_GT(o.sharedHandednessThen, 0) << "that curl is right-handed";
+    EXPECT_TRUE(o.read.count(procedure::LoopKind::ReverseAlpha) == 1);
     EXPECT_TRUE(o.read.count(procedure::LoopKind::Alpha) == 0);
+}
+
+TEST(SigmoidLoop, ASigmoidSweptToTheLeftOnANarrowRootIsPushedIntoAnAlphaLoop)
+{
+    const PushOutcome o = pushIntoRedundantSigmoid(0.17, -1.0);
+    recordAStableLoop(o);
+    EXPECT_GE(o.mostShared, 1) << "the shaft crosses itself where the sigmoid at rest does";
+    EXPECT_LT(o.sharedHandednessThen, 0) << "left-handed: the shaft leaving the sigmoid passes behind";
+    EXPECT_TRUE(o.read.count(procedure::LoopKind::Alpha) == 1);
     EXPECT_TRUE(o.read.count(procedure::LoopKind::ReverseAlpha) == 0);
-    EXPECT_LT(o.stepsDeep, kStepsDeep);
-    EXPECT_LT(o.summary.peakHandleForce, kOperatorPeak);
+}
+
+struct Reduction {
+    double alphaFrom = -1.0;   ///< s: when the alpha was first held; < 0: never
+    double alphaUntil = -1.0;  ///< s: when it was last held
+    double turnedInAlpha =
+        0.0;  ///< rad: the handle's rotation summed over the steps the alpha was held (+ = counter-clockwise)
+    int crossingsAfter = -1;  ///< own and shared crossings at the first analysis after the alpha
+    std::set<procedure::LoopKind> held;
+    looptest::RunSummary summary;
+};
+
+TEST(SigmoidLoop, TheExpertBacksOffTheAlphaTurningClockwiseAndTheAlphaComesUndone)
+{
+    // The expert's first 70 s into the sigmoid of the test above: it steers
+    // in, reads the alpha, backs off turning clockwise (ScriptedOperator's
+    // reductionTurn), and the shaft's crossing comes undone. The withdrawal
+    // undoes it: the same run with the turn taken out undoes it as soon (the
+    // contact's friction acts on the shaft's sliding, not on its spin, so a
+    // turn drags the wall only through the shape it gives the shaft).
+    constexpr int kSteps = 70000;
+    const geometry::ColonAnatomy anatomy = redundantSigmoidColon(0.17, -1.0);
+    const procedure::ProcedureSettings settings = haustratedAndGuarded();
+    procedure::ProcedureLoop loop(anatomy, settings);
+    procedure::ScriptedOperator expert(procedure::expertStyle());
+    Reduction r;
+    double rotation = 0.0;
+    for (int s = 0; s < kSteps && !expert.finished(); ++s) {
+        const procedure::InputSample input = expert.next(loop);
+        const bool inAlpha = loop.loops().current() == procedure::LoopKind::Alpha;
+        if (inAlpha) {
+            r.turnedInAlpha += input.rotation - rotation;
+        }
+        rotation = input.rotation;
+        loop.step(input);
+        looptest::observe(loop, r.summary);
+        const procedure::LoopKind held = loop.loops().current();
+        r.held.insert(held);
+        if (held == procedure::LoopKind::Alpha) {
+            r.alphaFrom = r.alphaFrom < 0.0 ? loop.time() : r.alphaFrom;
+            r.alphaUntil = loop.time();
+            r.crossingsAfter = -1;
+        } else if (r.alphaFrom >= 0.0 && r.crossingsAfter < 0) {
+            const procedure::LoopSignals& signals = loop.loops().signals();
+            r.crossingsAfter = signals.crossings + signals.sharedCrossings;
+        }
+    }
+    ::testing::Test::RecordProperty("alpha_from_s", std::to_string(r.alphaFrom));
+    ::testing::Test::RecordProperty("alpha_until_s", std::to_string(r.alphaUntil));
+    ::testing::Test::RecordProperty("turned_in_alpha_rad", std::to_string(r.turnedInAlpha));
+    ::testing::Test::RecordProperty("crossings_after", std::to_string(r.crossingsAfter));
+    ::testing::Test::RecordProperty("peak_handle_force_N", std::to_string(r.summary.peakHandleForce));
+    EXPECT_TRUE(r.summary.finite);
+    ASSERT_GT(r.alphaFrom, 0.0) << "the expert's insertion forms the alpha too";
+    EXPECT_LT(r.alphaUntil, kSteps * settings.stepping.loopStep - 1.0) << "and the alpha is undone";
+    EXPECT_LT(r.turnedInAlpha, -1.0) << "by turning clockwise (negative), at least a sixth of a turn";
+    EXPECT_EQ(r.crossingsAfter, 0) << "the shaft no longer crosses itself";
+    EXPECT_TRUE(r.held.count(procedure::LoopKind::ReverseAlpha) == 0);
+    EXPECT_LT(r.summary.peakHandleForce, kOperatorPeak);
 }
 
 }  // namespace
