@@ -381,6 +381,16 @@ TEST(LoopDetector, ACrossingsHandednessIsTheHelixsAndNotItsProjections)
     }
 }
 
+/// A shaft laid along the first metre of the colon's path at rest, a node every 2 cm.
+Eigen::Matrix3Xd firstMetreOfRestPath(const geometry::Centreline& centreline)
+{
+    Eigen::Matrix3Xd follow(3, 51);
+    for (Eigen::Index k = 0; k < follow.cols(); ++k) {
+        follow.col(k) = geometry::sampleCentreline(centreline, 0.02 * static_cast<double>(k)).point;
+    }
+    return follow;
+}
+
 // The 66 cm redundant sigmoid crosses itself in the anterior view at rest; a
 // shaft that follows it crosses itself there too, and that crossing is the
 // colon's, not a loop's.
@@ -390,14 +400,7 @@ TEST(LoopDetector, AShaftFollowingAColonThatCrossesItselfHasNoCrossingOfItsOwn)
     redundant.sigmoidLength = 0.66;
     const geometry::ColonAnatomy colon = geometry::buildProceduralColon(redundant);
     const auto& c = colon.centreline;
-    std::vector<Eigen::Vector3d> nodes;
-    for (double s = 0.0; s <= 1.0; s += 0.02) {
-        nodes.push_back(geometry::sampleCentreline(c, s).point);
-    }
-    Eigen::Matrix3Xd follow(3, static_cast<Eigen::Index>(nodes.size()));
-    for (size_t k = 0; k < nodes.size(); ++k) {
-        follow.col(static_cast<Eigen::Index>(k)) = nodes[k];
-    }
+    const Eigen::Matrix3Xd follow = firstMetreOfRestPath(c);
     ASSERT_GE(coronalCrossings(follow), 1) << "the redundant sigmoid crosses itself at rest";
     LoopDetector detector(c);
     detector.update(follow, shaftLength(follow));
@@ -414,10 +417,7 @@ LoopDetector storedAlongRedundantSigmoid(double sweep, geometry::ColonAnatomy& c
     redundant.sigmoidLength = 0.66;
     redundant.sigmoidSweep = sweep;
     colon = geometry::buildProceduralColon(redundant);
-    Eigen::Matrix3Xd follow(3, 51);
-    for (Eigen::Index k = 0; k < follow.cols(); ++k) {
-        follow.col(k) = geometry::sampleCentreline(colon.centreline, 0.02 * static_cast<double>(k)).point;
-    }
+    const Eigen::Matrix3Xd follow = firstMetreOfRestPath(colon.centreline);
     LoopDetector detector(colon.centreline);
     detector.update(follow, shaftLength(follow) + 0.12);
     return detector;

@@ -88,8 +88,8 @@ PushOutcome pushIntoRedundantSigmoid(double rootLength, double sweep = 1.0)
         loop.step(novice.next(loop));
         looptest::observe(loop, outcome.summary);
         const procedure::LoopSignals& signals = loop.loops().signals();
-        outcome.read.insert(loop.loops().current());
         const procedure::LoopKind held = loop.loops().current();
+        outcome.read.insert(held);
         if ((held == procedure::LoopKind::Alpha || held == procedure::LoopKind::ReverseAlpha) &&
             outcome.crossedTypeAt < 0.0) {
             outcome.crossedTypeAt = loop.time();
@@ -182,8 +182,8 @@ TEST(SigmoidLoop, ASigmoidSweptToTheLeftOnANarrowRootIsPushedIntoAnAlphaLoop)
 struct Reduction {
     double alphaFrom = -1.0;   ///< s: when the alpha was first held; < 0: never
     double alphaUntil = -1.0;  ///< s: when it was last held
-    double turnedInAlpha =
-        0.0;  ///< rad: the handle's rotation summed over the steps the alpha was held (+ = counter-clockwise)
+    /// rad: the handle's rotation summed over the steps the alpha was held (+ = counter-clockwise)
+    double turnedInAlpha = 0.0;
     int crossingsAfter = -1;  ///< own and shared crossings at the first analysis after the alpha
     std::set<procedure::LoopKind> held;
     looptest::RunSummary summary;
