@@ -10,11 +10,12 @@
 //
 //   construct_validity [--seconds S] [--seeds 1,2,3,...] [--element-points 0|1]
 //                      [--side-normals 0|1] [--pleat-search 0|1] [--sticking-friction 0|1]
-//                      [--haustral-axial-ratio R] [--max-node-step M]
+//                      [--spin-friction 0|1] [--haustral-axial-ratio R] [--max-node-step M]
 //
 // Seed 0 is the default colon; any other seed is a generated patient. The
-// four contact options (contact.elementPoints, contact.sideNormals,
-// contact.pleatSearch, contact.stickingFriction; off by default) and the
+// five contact options (contact.elementPoints, contact.sideNormals,
+// contact.pleatSearch, contact.stickingFriction, contact.spinFriction; off
+// by default) and the
 // wall's tissue.haustralAxialRatio (1 by default) and the scope's step guard
 // (scope.maxNodeStep, m; 1 by default: off in practice) apply to both
 // operators' runs.
@@ -60,6 +61,7 @@ struct ModelOptions {
     double sideNormals = 0.0;
     double pleatSearch = 0.0;
     double stickingFriction = 0.0;
+    double spinFriction = 0.0;
     double haustralAxialRatio = 1.0;
     double maxNodeStep = scope::ScopeParameters{}.maxNodeStep;  ///< m
 };
@@ -73,6 +75,7 @@ Run runOperator(std::uint64_t seed, const procedure::OperatorStyle& style, doubl
     settings.contact.sideNormals = options.sideNormals;
     settings.contact.pleatSearch = options.pleatSearch;
     settings.contact.stickingFriction = options.stickingFriction;
+    settings.contact.spinFriction = options.spinFriction;
     settings.tissue.haustralAxialRatio = options.haustralAxialRatio;
     settings.scope.maxNodeStep = options.maxNodeStep;
     const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(patient.anatomy);
@@ -139,6 +142,9 @@ int main(int argc, char** argv)
                 const auto& spec = contact::ContactParameters::stickingFrictionSpec;
                 options.stickingFriction =
                     bench::parseList(flag, value, spec.minValue, spec.maxValue).front();
+            } else if (flag == "--spin-friction") {
+                const auto& spec = contact::ContactParameters::spinFrictionSpec;
+                options.spinFriction = bench::parseList(flag, value, spec.minValue, spec.maxValue).front();
             } else if (flag == "--haustral-axial-ratio") {
                 const auto& spec = physics::TissueParameters::haustralAxialSpec;
                 options.haustralAxialRatio =
@@ -150,7 +156,7 @@ int main(int argc, char** argv)
                 throw std::invalid_argument("unknown option '" + flag +
                                             "' (allowed: --seconds, --seeds, --element-points, "
                                             "--side-normals, --pleat-search, --sticking-friction, "
-                                            "--haustral-axial-ratio, --max-node-step)");
+                                            "--spin-friction, --haustral-axial-ratio, --max-node-step)");
             }
         });
     } catch (const std::exception& error) {
@@ -161,10 +167,11 @@ int main(int argc, char** argv)
         "expert and novice, %.1f s per run; cecum: time to cecum (s, - when not reached); furthest: "
         "tip along the colon / colon length (m); outside: steps with the tip more than a scope diameter "
         "into the wall; guarded: steps with a chain solve refused by the scope's step guard; "
-        "contact options: elementPoints %g, sideNormals %g, pleatSearch %g, stickingFriction %g; "
+        "contact options: elementPoints %g, sideNormals %g, pleatSearch %g, stickingFriction %g, "
+        "spinFriction %g; "
         "tissue.haustralAxialRatio %g; scope.maxNodeStep %g m\n",
         seconds, options.elementPoints, options.sideNormals, options.pleatSearch, options.stickingFriction,
-        options.haustralAxialRatio, options.maxNodeStep);
+        options.spinFriction, options.haustralAxialRatio, options.maxNodeStep);
     std::printf("%-7s %-6s %10s %17s %9s %6s %6s %10s %9s %9s\n", "who", "seed", "cecum_s", "furthest_m",
                 "looped_s", "loops", "alpha", "peak_F_N", "outside", "guarded");
     int fasterToCecum = 0;

@@ -6,7 +6,7 @@ namespace colonosim::contact {
 
 namespace {
 using P = ContactParameters;
-constexpr std::array<Field<P>, 14> kContactFields{{
+constexpr std::array<Field<P>, 15> kContactFields{{
     {&P::stiffnessSpec, &P::contactStiffness},
     {&P::dampingSpec, &P::contactDamping},
     {&P::frictionSpec, &P::frictionCoefficient},
@@ -19,6 +19,7 @@ constexpr std::array<Field<P>, 14> kContactFields{{
     {&P::sideNormalsSpec, &P::sideNormals},
     {&P::stickingFrictionSpec, &P::stickingFriction},
     {&P::pleatSearchSpec, &P::pleatSearch},
+    {&P::spinFrictionSpec, &P::spinFriction},
     {&P::relaxationSpec, &P::loadRelaxation},
     {&P::stepLimitSpec, &P::stepLimit},
 }};

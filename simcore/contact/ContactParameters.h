@@ -126,6 +126,21 @@ struct ContactParameters {
         "is -slip dt / (2 R) wherever the slip is slower than 2 mu lambda R / dt (metres a second on a "
         "bent shaft), independent of mu: a 25 s push into a redundant sigmoid ran bit for bit the same "
         "with mu 0.1 and 0.3 (README, known limits)"};
+    static constexpr ParameterSpec spinFrictionSpec{
+        "spinFriction",
+        "1",
+        0.0,
+        0.0,
+        1.0,
+        "1: the shaft's spin about its own axis slides its surface over the wall: a contact point's slip "
+        "takes the surface's velocity (the node's less r w x n, w the spin, n the wall's normal, r the "
+        "scope's radius), and the friction found for it acts at the surface, a moment (-r n) x f on the rod "
+        "besides the force f at its axis; 0: the slip of the axis alone and no friction moment "
+        "(procedure/ContactCoupling.h)",
+        "model choice: 0 keeps the runs the README measured bit for bit. Without it a shaft turned in the "
+        "colon meets no friction moment and the wall no drag from the turn: torque reaches the tip however "
+        "much of the shaft lies on the wall, and a turned loop feels no sideways push from the wall "
+        "(README, known limits; build/bench/construct_validity --spin-friction)"};
     static constexpr ParameterSpec sideNormalsSpec{
         "sideNormals",
         "1",
@@ -191,6 +206,7 @@ struct ContactParameters {
     double sideNormals = sideNormalsSpec.defaultValue;
     double stickingFriction = stickingFrictionSpec.defaultValue;
     double pleatSearch = pleatSearchSpec.defaultValue;
+    double spinFriction = spinFrictionSpec.defaultValue;
     double loadRelaxation = relaxationSpec.defaultValue;
     double stepLimit = stepLimitSpec.defaultValue;
 

@@ -111,6 +111,18 @@ const std::vector<LumenNodeContact>& LumenContact::compute(const Eigen::Matrix3X
     return m_contacts;
 }
 
+void LumenContact::addSurfaceSpin(const Eigen::Matrix3Xd& spin)
+{
+    const auto n = std::min(static_cast<Eigen::Index>(m_contacts.size()), spin.cols());
+    for (Eigen::Index i = 0; i < n; ++i) {
+        LumenNodeContact& c = m_contacts[static_cast<size_t>(i)];
+        // The surface point touching the wall lies r from the axis, against
+        // the normal: it moves at w x (-r n) relative to the axis.
+        const Eigen::Vector3d surface = -c.scopeRadius * spin.col(i).cross(c.normal);
+        c.slip += surface - surface.dot(c.normal) * c.normal;
+    }
+}
+
 double LumenNodeContact::depthAt(const Eigen::Vector3d& x, Eigen::Vector3d& n) const
 {
     double side = 0.0;

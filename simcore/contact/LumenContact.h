@@ -103,6 +103,13 @@ public:
                                                  const Eigen::Matrix3Xd& wallVelocities,
                                                  int addedAtBase = kNoHistory, bool wallMoved = true);
     static constexpr int kNoHistory = -(1 << 30);
+    /// With contact.spinFriction: adds to each contact's slip the velocity of
+    /// the scope's surface at the wall from the shaft's spin, -r w x n (w the
+    /// angular velocity about the shaft's axis at the contact, one column per
+    /// contact of the last compute(), rad/s, world; r the scope's radius),
+    /// so that friction opposes the surface's slip, not the axis's.
+    void addSurfaceSpin(const Eigen::Matrix3Xd& spin);
+
     [[nodiscard]] const std::vector<LumenNodeContact>& contacts() const { return m_contacts; }
     [[nodiscard]] const LumenTube& tube() const { return m_tube; }
     [[nodiscard]] const ContactParameters& parameters() const { return m_parameters; }

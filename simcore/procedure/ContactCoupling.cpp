@@ -103,6 +103,16 @@ void ContactCoupling::buildCompliance(const scope::DiscreteRod& rod)
         m_prefixB[i + 1] = m_prefixB[i] + w * x;
         m_prefixC[i + 1] = m_prefixC[i] + x.transpose() * w * x;
     }
+    if (m_spinFriction) {
+        // How far a moment turns the joints before a point, bounded by each
+        // joint's most compliant axis: the spin slip's compliance below.
+        m_prefixTwist.resize(size);
+        m_prefixTwist[0] = 0.0;
+        for (int k = 0; k < n; ++k) {
+            const auto i = static_cast<size_t>(k);
+            m_prefixTwist[i + 1] = m_prefixTwist[i] + rod.jointResistance(k).cwiseInverse().maxCoeff();
+        }
+    }
     // C_ab = X_a^T A X_b - X_a^T B - B^T X_b + C from the prefix sums up to
     // joint min(a, b) - 1 (X = [x]x, X^T = -X).
     // A point inside an element moves as a node there (ContactPoints.h): the
@@ -377,6 +387,28 @@ void ContactCoupling::measureSlipCompliance()
             }
         }
     }
+    if (!m_spinFriction) {
+        return;
+    }
+    // The friction acts at the surface, r from the axis: its moment turns the
+    // shaft, and a turn of w slides the surface by r w. The moment of a load
+    // at b turns the joints before both a and b, by at most T (the prefix of
+    // their most compliant axes) per newton metre, so it slides a's surface
+    // by at most r^2 T per newton. Through the surface points' levers the
+    // slip compliance is bounded by (sqrt(R_a) + sqrt(r^2 sum_b T_ab))^2.
+    const std::vector<contact::LumenNodeContact>& contacts = *m_contacts;
+    for (size_t a = 0; a < m; ++a) {
+        const double ra = contacts[static_cast<size_t>(m_active[a])].scopeRadius;
+        double turn = 0.0;
+        for (size_t b = 0; b < m; ++b) {
+            const double rb = contacts[static_cast<size_t>(m_active[b])].scopeRadius;
+            const auto upto =
+                static_cast<size_t>(std::min(m_points.joints(m_active[a]), m_points.joints(m_active[b])));
+            turn += ra * rb * m_prefixTwist[upto];
+        }
+        const double root = std::sqrt(m_slipCompliance[a]) + std::sqrt(turn);
+        m_slipCompliance[a] = root * root;
+    }
 }
 
 void ContactCoupling::solveAndApply(scope::DiscreteRod& rod, const contact::LumenContact& law)
@@ -420,6 +452,17 @@ void ContactCoupling::solveAndApply(scope::DiscreteRod& rod, const contact::Lume
         } else {
             rod.force[base] += (1.0 - t) * load;
             rod.force[base + 1] += t * load;
+        }
+        if (m_spinFriction) {
+            // The friction acts where the surface touches the wall, r from
+            // the axis against the normal: a moment about the axis besides.
+            const Eigen::Vector3d moment = (-contacts[point].scopeRadius * m_normal[a]).cross(friction);
+            if (t == 0.0) {
+                rod.torque[base] += moment;
+            } else {
+                rod.torque[base] += (1.0 - t) * moment;
+                rod.torque[base + 1] += t * moment;
+            }
         }
     }
 }

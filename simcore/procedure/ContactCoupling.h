@@ -121,12 +121,16 @@ public:
     /// the nodes alone by default).
     /// `sideNormals`: the loads are pushed across the shaft (see above).
     /// `stickingFriction`: each point's friction is kept from step to step
-    /// (see solveAndApply()).
+    /// (see solveAndApply()). `spinFriction`: the friction acts at the
+    /// shaft's surface, a moment on the rod besides (see solveAndApply();
+    /// the contacts' slip then includes the surface's spin,
+    /// LumenContact::addSurfaceSpin()).
     ContactCoupling(double contactStiffness, double maxStep, double loopStep, double relaxation,
                     SweepLimits sweeps = {}, ContactPoints points = {}, bool sideNormals = false,
-                    bool stickingFriction = false)
+                    bool stickingFriction = false, bool spinFriction = false)
         : m_stiffness(contactStiffness), m_maxStep(maxStep), m_loopStep(loopStep), m_relaxation(relaxation),
-          m_limits(sweeps), m_points(points), m_sideNormals(sideNormals), m_stickingFriction(stickingFriction)
+          m_limits(sweeps), m_points(points), m_sideNormals(sideNormals),
+          m_stickingFriction(stickingFriction), m_spinFriction(spinFriction)
     {}
 
     /// Updates the loads from `contacts` (one per contact point of the
@@ -166,6 +170,17 @@ public:
     /// (the friction map of one step has a spectral radius of at most 1/2),
     /// so the slip left decays by at least half a step. A point that leaves
     /// its wall (lambda = 0) lets go of its friction.
+    ///
+    /// Spin friction. The friction f acts where the shaft's surface touches
+    /// the wall, r from the axis against the normal n: with spinFriction the
+    /// rod takes the moment (-r n) x f at the point besides f at its axis
+    /// (shared by an element's two nodes as the force is). Its part about the
+    /// axis, r |f| at most mu lambda r, resists the shaft's spin; the slip the
+    /// friction opposes is the surface's, the axis's velocity plus -r w x n
+    /// (w the spin). The stick's slip compliance R then also bounds how far
+    /// the friction's moments slide the surface by turning the joints:
+    /// (sqrt(R) + sqrt(r^2 sum_b T_ab))^2, T_ab the sum of the most
+    /// compliant axis of each joint before both points.
     void solveAndApply(scope::DiscreteRod& rod, const contact::LumenContact& law);
 
     /// Contact load (normal and friction) at each contact point (base to tip;
@@ -209,6 +224,7 @@ private:
     ContactPoints m_points;
     bool m_sideNormals;
     bool m_stickingFriction;
+    bool m_spinFriction;
     int m_sweeps = 0;
     double m_residual = 0.0;
     std::vector<Eigen::Vector3d> m_load;      ///< normal load per node (lambda n), N
@@ -238,6 +254,8 @@ private:
     Eigen::Matrix3Xd m_loads;
     // Prefix sums over the joints (A = sum W, B = sum W X, C = sum X^T W X).
     std::vector<Eigen::Matrix3d> m_prefixA, m_prefixB, m_prefixC;
+    /// Prefix sums of each joint's largest compliance, rad/(N m) (spin friction).
+    std::vector<double> m_prefixTwist;
 };
 
 }  // namespace colonosim::procedure

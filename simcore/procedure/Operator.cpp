@@ -266,7 +266,7 @@ InputSample ScriptedOperator::next(const ProcedureLoop& loop)
         // negative rotation), counter-clockwise from a reverse alpha.
         m_input.insertion = std::max(m_input.insertion - 0.5 * m_style.insertSpeed * dt, 0.0);
         if (m_style.reducesLoops) {
-            m_input.rotation += reductionTurn(loop.loops().current()) * 0.5 * dt;
+            m_input.rotation += reductionTurn(loop.loops().current()) * m_style.reductionTurnRate * dt;
         }
         if (m_input.insertion <= m_reduceUntil &&
             (loop.loops().current() == LoopKind::None || m_input.insertion <= m_reduceFloor)) {

@@ -65,6 +65,9 @@ struct OperatorStyle {
     /// reacts to a push that lasts, not to a millisecond's jolt of the
     /// contact); 0: reacts to the instantaneous force (the novice).
     double feelTime = 0.0;
+    /// rad/s: how fast a loop reducer turns the shaft while withdrawing from
+    /// a loop (the way reductionTurn() says); 0 withdraws without turning.
+    double reductionTurnRate = 0.5;
 };
 
 /// Angular offset of the lumen from the view's centre within which an

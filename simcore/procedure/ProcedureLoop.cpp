@@ -56,7 +56,8 @@ ProcedureLoop::ProcedureLoop(const geometry::ColonAnatomy& anatomy, const Proced
                   settings.contact.sweepTolerance, std::lround(settings.contact.prefixSweeps) != 0},
                  ContactPoints{1 + static_cast<int>(std::lround(settings.contact.elementPoints))},
                  std::lround(settings.contact.sideNormals) != 0,
-                 std::lround(settings.contact.stickingFriction) != 0),
+                 std::lround(settings.contact.stickingFriction) != 0,
+                 std::lround(settings.contact.spinFriction) != 0),
       m_loops(anatomy.centreline, settings.loops),
       m_discomfort(withFailureStrain(settings.discomfort, settings.tissue.mesenteryMaxStrain)),
       m_lesions(anatomy, settings.lesions, settings.viewing), m_bleeding(settings.bleeding),
@@ -111,6 +112,9 @@ void ProcedureLoop::applyContact()
             m_scopeVelocity.col(i) = (m_scopeNow.col(i) - previous.col(i)) / m_settings.stepping.loopStep;
         }
     }
+    if (std::lround(m_settings.contact.spinFriction) != 0) {
+        measureSpin(static_cast<int>(shift));
+    }
     // The contact is measured against the wall where its own motion carries
     // it over the step (x + v dt), as the scope's side is measured where the
     // step's loads will put it: against the wall's present position a node
@@ -161,6 +165,30 @@ void ProcedureLoop::applyContact()
     }
 }
 
+void ProcedureLoop::measureSpin(int shift)
+{
+    // Each node's spin about the shaft's axis over the last step, from its
+    // element's frame (the tip's own frame at the tip): the rotation
+    // C_before^T C_now about the frame's forward axis, small over 1 ms
+    // (its angle from the antisymmetric part, sin = angle to 1e-7 at 0.5
+    // degree a step). Nodes that entered since are taken as not spinning.
+    const scope::DiscreteRod& rod = m_scope.rod();
+    const int n = rod.numNodes();
+    const double dt = m_settings.stepping.loopStep;
+    m_nodeSpin.setZero(3, n);
+    for (int i = 0; i < n; ++i) {
+        const int j = i - shift;
+        if (j >= 0 && j < static_cast<int>(m_framePrevious.size())) {
+            const Eigen::Matrix3d& now = rod.frame[static_cast<size_t>(i)];
+            const Eigen::Matrix3d turn = m_framePrevious[static_cast<size_t>(j)].transpose() * now;
+            const double angle = 0.5 * (turn(1, 0) - turn(0, 1));
+            m_nodeSpin.col(i) = (angle / dt) * now.col(2);
+        }
+    }
+    m_framePrevious.assign(rod.frame.begin(), rod.frame.end());
+    m_coupling.points().interpolate(m_nodeSpin, m_pointSpin);
+}
+
 void ProcedureLoop::solveContact(const Eigen::Matrix3Xd& scope, int addedAtBase, bool wallMoved)
 {
     const ContactPoints& points = m_coupling.points();
@@ -168,6 +196,9 @@ void ProcedureLoop::solveContact(const Eigen::Matrix3Xd& scope, int addedAtBase,
     const auto& contacts =
         m_contact.compute(m_points, m_pointVelocity, 0.5 * m_settings.scope.outerDiameter, m_wallAhead,
                           m_colon.body.velocities(), addedAtBase * points.stride, wallMoved);
+    if (std::lround(m_settings.contact.spinFriction) != 0) {
+        m_contact.addSurfaceSpin(m_pointSpin);
+    }
     m_scope.clearLoads();
     m_scope.addGravity(m_settings.environment.gravity *
                        physics::downDirection(m_settings.environment.patientPosition));

@@ -130,6 +130,9 @@ private:
     /// solved under those loads. `wallMoved` false: the lumen's rings are the
     /// last solve's.
     void solveContact(const Eigen::Matrix3Xd& scope, int addedAtBase, bool wallMoved);
+    /// contact.spinFriction: each node's spin over the last step, and the
+    /// contact points' (`shift` nodes entered at the base since).
+    void measureSpin(int shift);
     void observe();
     void updateBleeding();
 
@@ -165,6 +168,11 @@ private:
     Eigen::Matrix3Xd m_passLoads;     ///< the previous pass's contact loads
     /// The contact points (ContactPoints.h) of the shape being measured and their velocities.
     Eigen::Matrix3Xd m_points, m_pointVelocity;
+    // contact.spinFriction: each node's element frame at the last step's
+    // start, and the spin about the shaft's axis of each node and contact
+    // point over the last step (rad/s, world).
+    std::vector<Eigen::Matrix3d> m_framePrevious;
+    Eigen::Matrix3Xd m_nodeSpin, m_pointSpin;
     int m_passes = 0;             ///< coupling passes of the last step
     double m_maxWallForce = 0.0;  ///< largest contact load on one scope node this step, N
     double m_time = 0.0;

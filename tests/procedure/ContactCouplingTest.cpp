@@ -122,6 +122,25 @@ double solvedDeflection(Colonoscope& scope, int node, const Eigen::Vector3d& for
     return moved;
 }
 
+/// Depths for the five nodes from `first` on, chosen so that every one
+/// carries the same load (50 mN) at the solution, d = lambda / k_c +
+/// G lambda; `g` receives G, their Delassus matrix.
+std::map<int, double> equalLoadDepths(const Colonoscope& scope, int first, Eigen::MatrixXd& g)
+{
+    std::map<int, double> pressed;
+    for (int node = first; node < first + 5; ++node) {
+        pressed[node] = 1e-3;  // m
+    }
+    ContactCoupling probe(kStiffness, 1.0, kLoopStep, 1.0);
+    probe.update(contactsOn(scope, pressed), scope.rod(), 0, kRigidWall);
+    g = probe.delassus();
+    const double load = 0.05;  // N per node
+    for (int k = 0; k < static_cast<int>(g.rows()); ++k) {
+        pressed[first + k] = load / kStiffness + load * g.row(k).sum();
+    }
+    return pressed;
+}
+
 // G_ab is the rod's compliance: a force along n_b at node b moves node a by
 // G_ab along n_a. Checked against the chain solver's converged response for
 // small loads (linear range), diagonal and off-diagonal.
@@ -363,21 +382,9 @@ TEST(ContactCoupling, TheFrictionOfManyContactsTogetherCannotReverseTheirSlip)
 {
     Colonoscope scope = straightScope(0.3);
     const int tip = scope.numInsertedNodes() - 1;
-    // Depths chosen so that every node carries the same load at the
-    // solution, d = lambda / k_c + G lambda (G their Delassus matrix).
-    std::map<int, double> pressed;
-    for (int node = tip - 4; node <= tip; ++node) {
-        pressed[node] = 1e-3;  // m
-    }
-    ContactCoupling probe(kStiffness, 1.0, kLoopStep, 1.0);
-    const auto first = contactsOn(scope, pressed);
-    probe.update(first, scope.rod(), 0, kRigidWall);
-    const Eigen::MatrixXd g = probe.delassus();
+    Eigen::MatrixXd g;
+    const std::map<int, double> pressed = equalLoadDepths(scope, tip - 4, g);
     ASSERT_EQ(g.rows(), 5);
-    const double load = 0.05;  // N per node
-    for (int k = 0; k < 5; ++k) {
-        pressed[tip - 4 + k] = load / kStiffness + load * g.row(k).sum();
-    }
     auto contacts = contactsOn(scope, pressed);
     const double slip = 1e-4;  // m/s sideways (+z): well inside every node's stick
     for (const auto& [node, depth] : pressed) {
@@ -740,4 +747,100 @@ TEST(ContactCoupling, SideNormalsPushAcrossTheShaft)
         ASSERT_GT(load.norm(), 0.0);
         EXPECT_NEAR(load.x() / load.y(), -std::tan(angle), 1e-6) << (atTip ? "the tip" : "head on");
     }
+}
+
+namespace {
+
+/// The turn of a frame about its own forward axis (+x on a straight scope)
+/// from `before` to `after`, rad (small).
+double turnAbout(const Eigen::Matrix3d& before, const Eigen::Matrix3d& after)
+{
+    const Eigen::Matrix3d turn = before.transpose() * after;
+    return 0.5 * (turn(1, 0) - turn(0, 1));
+}
+
+}  // namespace
+
+// Spin friction (contact.spinFriction): the friction acts where the shaft's
+// surface touches the wall, r below a node pressed on a floor (normal +y).
+// A shaft spinning about its axis (+x) at w slides that surface point at
+// -r w along z; sliding fast, the friction is mu lambda along +z and its
+// moment about the axis, (-r n) x f = -mu lambda r x, resists the spin. The
+// rod carries the force at the node and the moment besides, the wall the
+// opposite force; without spin friction there is no moment.
+TEST(ContactCoupling, SpinFrictionActsAtTheShaftsSurface)
+{
+    const double mu = ContactParameters{}.frictionCoefficient;
+    for (const bool spin : {false, true}) {
+        Colonoscope scope = straightScope(0.15);
+        const int node = scope.numInsertedNodes() / 2;
+        auto contacts = contactsOn(scope, {{node, 1e-3}});
+        contacts[static_cast<size_t>(node)].slip =
+            Eigen::Vector3d(0.0, 0.0, -10.0);  // m/s, far past the stick
+        ContactCoupling coupling(kStiffness, 1.0, kLoopStep, 1.0, {}, {}, false, false, spin);
+        coupling.update(contacts, scope.rod(), 0, kRigidWall);
+        coupling.solveAndApply(scope.rod(), frictionLaw());
+        const double lambda = coupling.normalLoads()[static_cast<size_t>(node)].norm();
+        ASSERT_GT(lambda, 0.0);
+        const Eigen::Vector3d load = coupling.loads().col(node);
+        EXPECT_NEAR(load.z(), mu * lambda, 1e-9 * lambda) << "Coulomb, against the slip";
+        const Eigen::Vector3d torque = scope.rod().torque[static_cast<size_t>(node)];
+        if (spin) {
+            EXPECT_NEAR(torque.x(), -mu * lambda * kRadius, 1e-12) << "resists the spin";
+            EXPECT_NEAR(torque.y(), 0.0, 1e-15);
+            EXPECT_NEAR(torque.z(), 0.0, 1e-15);
+        } else {
+            EXPECT_EQ(torque.norm(), 0.0);
+        }
+    }
+}
+
+// The friction moments of many contacts together cannot reverse their spin
+// in one step: five pressed nodes of a 30 cm shaft whose surfaces creep
+// along -z (as a slow spin about +x slides them) get friction and moments
+// that, with the chain at equilibrium under them, carry no node's surface
+// back past where it slid from in one step. The stick's slip compliance
+// bounds the moments' turn of the joints as well as the forces' push; with
+// the forces' alone the moments here would turn the surfaces back further.
+TEST(ContactCoupling, TheSpinFrictionOfManyContactsCannotReverseTheirSlip)
+{
+    Colonoscope scope = straightScope(0.3);
+    const int tip = scope.numInsertedNodes() - 1;
+    Eigen::MatrixXd g;
+    const std::map<int, double> pressed = equalLoadDepths(scope, tip - 5, g);
+    ASSERT_EQ(g.rows(), 5);
+    auto contacts = contactsOn(scope, pressed);
+    const double slip = 1e-4;  // m/s along -z: a creep, well inside every node's stick
+    for (const auto& [node, depth] : pressed) {
+        contacts[static_cast<size_t>(node)].slip = Eigen::Vector3d(0.0, 0.0, -slip);
+    }
+    ContactCoupling coupling(kStiffness, 1.0, kLoopStep, 1.0, {}, {}, false, false, true);
+    coupling.update(contacts, scope.rod(), 0, kRigidWall);
+    coupling.solveAndApply(scope.rod(), frictionLaw());
+    const std::vector<Eigen::Vector3d> at(scope.nodePositions().begin(), scope.nodePositions().end());
+    const std::vector<Eigen::Matrix3d> frames = scope.rod().frame;
+    double torqueSum = 0.0;
+    for (const auto& [node, depth] : pressed) {
+        ASSERT_GT(coupling.loads().col(node).z(), 0.0) << "node " << node << ": friction against the slip";
+        torqueSum += scope.rod().torque[static_cast<size_t>(node)].x();
+    }
+    ASSERT_LT(torqueSum, 0.0);
+    for (int s = 0; s < 40; ++s) {
+        scope.step();  // the chain's equilibrium under the applied loads
+    }
+    double back = 0.0;    // the furthest a surface point moved back along +z, m
+    double turned = 0.0;  // the part of it the moments' turn gave, m
+    for (const auto& [node, depth] : pressed) {
+        const auto i = static_cast<size_t>(node);
+        // The surface point r below the axis moves with the node and by the
+        // turn about +x: a turn a moves it by a x (-r y) = -r a z.
+        const double turn = -kRadius * turnAbout(frames[i], scope.rod().frame[i]);
+        const double surface = (scope.nodePositions()[i] - at[i]).z() + turn;
+        back = std::max(back, surface);
+        turned = std::max(turned, turn);
+    }
+    RecordProperty("surface_back_m", std::to_string(back));
+    EXPECT_GT(turned, 0.0) << "the moments turn the shaft against its spin";
+    EXPECT_GT(back, 0.0);
+    EXPECT_LT(back, slip * kLoopStep) << "the friction threw a surface back past where it slid from";
 }

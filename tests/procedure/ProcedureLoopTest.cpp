@@ -526,3 +526,77 @@ TEST(ScriptedOperator, ReducesEveryLoopClockwiseButAReverseAlphaCounterClockwise
     }
     EXPECT_EQ(procedure::reductionTurn(LoopKind::ReverseAlpha), 1.0);
 }
+
+namespace {
+
+/// What the handle feels while the shaft is turned on the wall: the mean
+/// axial torque and mu r times the mean sum of the normal loads (the
+/// friction moment of every contact sliding), over the last half second of
+/// a turn at `rate` rad/s held for one second, the scope 25 cm in.
+struct TurnedShaft {
+    double handleTorque = 0.0;    ///< N m, counter-clockwise seen from the operator
+    double slidingMoment = 0.0;   ///< mu r sum lambda, N m
+    double largestTipStep = 0.0;  ///< m, while the shaft is turned
+};
+
+TurnedShaft turnOnTheWall(bool spinFriction, double rate)
+{
+    ProcedureSettings settings;
+    settings.contact.stickingFriction = 1.0;
+    settings.contact.spinFriction = spinFriction ? 1.0 : 0.0;
+    ProcedureLoop loop(defaultColon(), settings);
+    const double mu = settings.contact.frictionCoefficient;
+    const double radius = 0.5 * settings.scope.outerDiameter;
+    InputSample input;
+    TurnedShaft out;
+    int measured = 0;
+    Eigen::Vector3d tip = Eigen::Vector3d::Zero();
+    for (int s = 0; s < 6500; ++s) {
+        input.insertion = std::min(0.25, 0.05 * s / 1000.0);  // 5 cm/s to 25 cm, then held
+        input.rotation = s < 5500 ? 0.0 : rate * (s - 5500) / 1000.0;
+        loop.step(input);
+        const Eigen::Vector3d now = loop.outputs().tip.position;
+        if (s > 5500) {
+            out.largestTipStep = std::max(out.largestTipStep, (now - tip).norm());
+        }
+        tip = now;
+        if (s >= 6000) {
+            double loads = 0.0;
+            for (const Eigen::Vector3d& load : loop.coupling().normalLoads()) {
+                loads += load.norm();
+            }
+            out.handleTorque += loop.outputs().handleTorque;
+            out.slidingMoment += mu * radius * loads;
+            ++measured;
+        }
+    }
+    out.handleTorque /= measured;
+    out.slidingMoment /= measured;
+    return out;
+}
+
+}  // namespace
+
+// Spin friction at the handle: the scope 25 cm into the default colon, its
+// shaft lying on the wall of the rectum and the rectosigmoid, turned
+// counter-clockwise at 2 rad/s. With spin friction the wall resists the turn
+// with the friction moment of the contacts sliding round, mu r sum lambda at
+// most: the handle feels it clockwise (negative), on top of what it feels
+// without. Without spin friction nothing resists the turn but the moments of
+// the contact forces about the anus.
+TEST(ProcedureLoop, SpinFrictionResistsTheShaftTurningOnTheWall)
+{
+    const double rate = 2.0;  // rad/s
+    const TurnedShaft plain = turnOnTheWall(false, rate);
+    const TurnedShaft spun = turnOnTheWall(true, rate);
+    RecordProperty("handle_torque_without_Nm", std::to_string(plain.handleTorque));
+    RecordProperty("handle_torque_with_Nm", std::to_string(spun.handleTorque));
+    RecordProperty("sliding_moment_Nm", std::to_string(spun.slidingMoment));
+    RecordProperty("largest_tip_step_without_m", std::to_string(plain.largestTipStep));
+    RecordProperty("largest_tip_step_with_m", std::to_string(spun.largestTipStep));
+    ASSERT_GT(spun.slidingMoment, 0.0) << "the shaft lies on the wall";
+    const double resisted = plain.handleTorque - spun.handleTorque;
+    EXPECT_GT(resisted, 0.5 * spun.slidingMoment);
+    EXPECT_LT(resisted, 1.2 * spun.slidingMoment);
+    EXPECT_LT(spun.largestTipStep, 2e-3) << "the turn stays smooth";
+}
