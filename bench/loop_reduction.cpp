@@ -1,22 +1,24 @@
-// Loop reduction report: the scripted expert pushed into the alpha loop of a
-// redundant sigmoid (66 cm, on a 17 cm root, swept to the left:
+// Loop reduction report: the scripted expert pushed into the crossed loop of
+// a redundant sigmoid (66 cm, on a 17 cm root, swept to the left:
 // anatomy.sigmoidSweep -1; the haustrated wall, tissue.haustralAxialRatio
 // 0.07, and the scope's step guard at 10 mm), as the slow test
-// SigmoidLoop.TheExpertBacksOffTheAlphaTurningClockwiseAndTheAlphaComesUndone
-// drives it. It reads the alpha and backs off turning clockwise; the report
-// says when the alpha was read and when it came undone, how far the handle
-// was turned meanwhile, the largest handle force and torque, and whether the
-// shaft still crossed itself after it. Run once per line of options, so that
-// the turn and the friction's spin can be told apart:
+// SigmoidLoop.TheExpertBacksOffTheReverseAlphaTurningCounterClockwiseAndItComesUndoneSooner
+// drives it. The loop there is left-handed, a reverse alpha: the expert
+// reads it and backs off turning counter-clockwise. The report says when
+// the crossed loop (alpha or reverse alpha) was read and when it came undone,
+// how far the handle was turned meanwhile, the largest handle force and
+// torque, and whether the shaft still crossed itself after it. Run once per
+// line of options, so that the turn, its direction and the friction's spin
+// can be told apart:
 //
 //   loop_reduction [--seconds S] [--spin-friction 0|1] [--sticking-friction 0|1]
 //                  [--turn-rate W] [--sweep K] [--root L]
 //
 // --turn-rate: rad/s the expert turns the shaft while reducing a loop
-// (OperatorStyle::reductionTurnRate, 0.5 by default; 0 withdraws without
-// turning; negative turns the other way). --sweep: anatomy.sigmoidSweep (-1
-// by default; +1 lays the sigmoid the other way round, where the push forms a
-// right-handed crossing, read as a reverse alpha); --root:
+// (OperatorStyle::reductionTurnRate, 0.5 by default, the way its type asks
+// for; 0 withdraws without turning; negative turns the other way). --sweep:
+// anatomy.sigmoidSweep (-1 by default; +1 lays the sigmoid the other way
+// round, where the expert formed no crossed loop in 70 s); --root:
 // anatomy.sigmoidRootLength, m (0.17 by default).
 
 #include "bench/ListArgument.h"

@@ -4,8 +4,10 @@
 #include "simcore/physics/StaticSolver.h"
 
 #include <cmath>
+#include <mutex>
 #include <numbers>
 #include <string>
+#include <vector>
 
 namespace colonosim::physics {
 
@@ -164,11 +166,44 @@ CalibrationReport calibrateWallStiffness(const TubeResolution& tube, const Tissu
     return report;
 }
 
-StiffnessCalibration wallCalibrationFor(const TissueParameters& tissue, const StiffnessCalibration& isotropic)
+namespace {
+
+bool sameTissue(const TissueParameters& a, const TissueParameters& b)
 {
-    if (tissue.haustralAxialRatio == 1.0) {
-        return isotropic;
+    for (const params::Field<TissueParameters>& field : TissueParameters::fields()) {
+        if (a.*field.member != b.*field.member) {
+            return false;
+        }
     }
+    return true;
+}
+
+/// The haustral calibrations this process has made, by their tissue: each
+/// takes two static solves of the test tube (about 4 s), and every procedure
+/// on the same tissue asks for the same one. Kept are the factors found for
+/// the tissue and for its flat wall, so that any given factors are scaled by
+/// them exactly as a fresh calibration would.
+struct CalibrationCache {
+    struct Entry {
+        TissueParameters tissue;
+        StiffnessCalibration folded;     ///< calibrateWallStiffness()'s factors for the tissue
+        StiffnessCalibration reference;  ///< and for its flat wall (ratio 1)
+    };
+    static constexpr size_t kCapacity = 8;
+    std::mutex mutex;
+    std::vector<Entry> entries;  ///< the oldest first
+};
+
+CalibrationCache& calibrationCache()
+{
+    static CalibrationCache cache;
+    return cache;
+}
+
+/// The factors calibrateWallStiffness() finds for `tissue` and for its flat
+/// wall; throws params::ParameterError when either misses its tolerance.
+CalibrationCache::Entry calibrateHaustralWall(const TissueParameters& tissue)
+{
     constexpr double kTolerance = 1e-3;
     TissueParameters plain = tissue;
     plain.haustralAxialRatio = 1.0;
@@ -186,8 +221,41 @@ StiffnessCalibration wallCalibrationFor(const TissueParameters& tissue, const St
                 std::to_string(kTolerance) + ")");
         }
     }
-    return {isotropic.axial * folded.factors.axial / reference.factors.axial,
-            isotropic.circumferential * folded.factors.circumferential / reference.factors.circumferential};
+    return {tissue, folded.factors, reference.factors};
+}
+
+}  // namespace
+
+StiffnessCalibration wallCalibrationFor(const TissueParameters& tissue, const StiffnessCalibration& isotropic)
+{
+    if (tissue.haustralAxialRatio == 1.0) {
+        return isotropic;
+    }
+    CalibrationCache& cache = calibrationCache();
+    CalibrationCache::Entry found;
+    bool kept = false;
+    {
+        const std::lock_guard<std::mutex> lock(cache.mutex);
+        for (const CalibrationCache::Entry& e : cache.entries) {
+            if (sameTissue(e.tissue, tissue)) {
+                found = e;
+                kept = true;
+                break;
+            }
+        }
+    }
+    if (!kept) {
+        // Calibrated outside the lock (a refused calibration throws and is
+        // not kept); two threads asking at once both calibrate, alike.
+        found = calibrateHaustralWall(tissue);
+        const std::lock_guard<std::mutex> lock(cache.mutex);
+        if (cache.entries.size() >= CalibrationCache::kCapacity) {
+            cache.entries.erase(cache.entries.begin());
+        }
+        cache.entries.push_back(found);
+    }
+    return {isotropic.axial * found.folded.axial / found.reference.axial,
+            isotropic.circumferential * found.folded.circumferential / found.reference.circumferential};
 }
 
 }  // namespace colonosim::physics

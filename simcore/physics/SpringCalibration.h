@@ -65,7 +65,9 @@ calibrateWallStiffness(const TubeResolution& tube, const TissueParameters& tissu
 /// themselves at ratio 1, else scaled by the ratio of the factors that
 /// calibrateWallStiffness() finds for the default TubeResolution with the
 /// tissue's ratio to those it finds with 1. Throws params::ParameterError
-/// when the calibration does not reach its tolerance.
+/// when the calibration does not reach its tolerance. The factors found are
+/// kept for the process by the tissue (the last 8 tissues): every procedure
+/// on the same tissue asks for the same ones, about 4 s each.
 [[nodiscard]] StiffnessCalibration wallCalibrationFor(const TissueParameters& tissue,
                                                       const StiffnessCalibration& isotropic);
 

@@ -351,7 +351,9 @@ LoopKind LoopDetector::classify(const LoopSignals& signals)
         if (handedness == 0) {
             return LoopKind::N;
         }
-        return handedness < 0 ? LoopKind::Alpha : LoopKind::ReverseAlpha;
+        // Right-handed: a clockwise spiral along the shaft, undone by clockwise
+        // torque (LoopDetector.h).
+        return handedness > 0 ? LoopKind::Alpha : LoopKind::ReverseAlpha;
     }
     case Segment::SplenicFlexure: return crossed ? LoopKind::ReverseSplenic : LoopKind::GammaDeepTransverse;
     default: return LoopKind::GammaDeepTransverse;

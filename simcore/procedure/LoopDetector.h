@@ -34,16 +34,29 @@
 /// Each node is located along the colon near its predecessor (a window of
 /// -5/+15 cm), so loops never jump to a part of the colon close in space.
 /// Classification, by the segment holding the most excess shaft:
-///   sigmoid (or descending) with crossings: Alpha if they are left-handed
-///     on balance, ReverseAlpha if right-handed (the handedness, not the
+///   sigmoid (or descending) with crossings: Alpha if they are right-handed
+///     on balance, ReverseAlpha if left-handed. The handedness, not the
 ///     direction the projection turns, is the loop's: the same clockwise
 ///     curl in the anterior view is one or the other by which strand passes
-///     in front. reference/clinical-assessment.md: the alpha loop is a
-///     clockwise spiral, the reverse alpha passes behind the shaft and needs
-///     counter-clockwise torque; the alpha is formed by counter-clockwise
-///     rotation as the shaft advances (Cotton and Williams) and reduced by
-///     clockwise torque: a shaft advancing while turning counter-clockwise
-///     as its operator sees it winds left-handed);
+///     in front. And the handedness decides the torque that takes the loop
+///     out. Turning the handle by an angle a while the shaft beyond is held
+///     changes the shaft's link (twist plus writhe, Calugareanu) by the tip's
+///     turn less the handle's; clockwise as the operator sees it is a
+///     right-handed turn about the insertion direction, so it adds
+///     left-handed link, which undoes a right-handed loop's writhe and
+///     tightens a left-handed one. reference/clinical-assessment.md: the
+///     alpha is a clockwise spiral (seen along the shaft: right-handed) and
+///     is reduced by clockwise torque; the reverse alpha needs
+///     counter-clockwise torque (clockwise tightens it, with a growing
+///     resistance to the turn; the alpha manoeuvre forms an alpha by turning
+///     counter-clockwise). The model shows the same: the expert's left-handed
+///     loop in the left-swept redundant sigmoid comes undone at 49.9 s
+///     turning counter-clockwise, 62.0 s without turning and 64.7 s turning
+///     clockwise (build/bench/loop_reduction). The model's crossed loops
+///     curl clockwise in the anterior view, so its alpha's distal limb
+///     passes behind the shaft and its reverse alpha's in front: the other
+///     way round from the reference's "the reverse alpha passes behind the
+///     shaft", which holds for loops curling counter-clockwise;
 ///   sigmoid without a crossing, or with crossings whose handedness cancels: N;
 ///   transverse (or hepatic flexure): GammaDeepTransverse;
 ///   splenic flexure with a crossing: ReverseSplenic;

@@ -104,6 +104,29 @@ TEST(Calibration, TheRunsFactorsAreTheGivenOnesForAFlatWallAndScaledForAHaustral
     EXPECT_LT(folded.axial, 0.2 * given.axial);
 }
 
+// A haustral wall's calibration is made once per tissue and kept for the
+// process (every procedure on the same tissue asks for the same one): asked
+// again, the same tissue and given factors get the same factors bit for bit;
+// other given factors are scaled by the same calibration, and another ratio
+// is calibrated for itself.
+TEST(Calibration, AHaustralWallsCalibrationIsKeptByItsTissueAndGivenFactors)
+{
+    TissueParameters tissue;
+    tissue.haustralAxialRatio = 0.07;
+    const StiffnessCalibration given{0.5, 0.97};
+    const StiffnessCalibration first = wallCalibrationFor(tissue, given);
+    TissueParameters other = tissue;
+    other.haustralAxialRatio = 0.3;
+    const StiffnessCalibration softer = wallCalibrationFor(other, given);
+    EXPECT_GT(softer.axial, first.axial) << "a ratio of 0.3 is its own calibration";
+    const StiffnessCalibration unit = wallCalibrationFor(tissue, StiffnessCalibration{});
+    EXPECT_DOUBLE_EQ(unit.axial, first.axial / given.axial) << "other given factors scale their own";
+    EXPECT_DOUBLE_EQ(unit.circumferential, first.circumferential / given.circumferential);
+    const StiffnessCalibration again = wallCalibrationFor(tissue, given);
+    EXPECT_EQ(again.axial, first.axial);
+    EXPECT_EQ(again.circumferential, first.circumferential);
+}
+
 TEST(Calibration, AHaustralRatioOutsideItsRangeIsRefusedByName)
 {
     TissueParameters tissue;

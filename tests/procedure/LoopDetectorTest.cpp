@@ -42,7 +42,8 @@ double segmentMiddle(Segment segment)
 /// the anterior view and rises 3 cm towards the front or the back as it goes
 /// round, so the curl's end passes in front of or behind the shaft that leads
 /// into it: clockwise with the curl in front and counter-clockwise with it
-/// behind are left-handed (an alpha loop), the other two right-handed.
+/// behind are left-handed (a reverse alpha loop), the other two
+/// right-handed (an alpha: a clockwise spiral along the shaft).
 enum class Extra {
     None,
     CurlClockwiseInFront,
@@ -163,14 +164,14 @@ INSTANTIATE_TEST_SUITE_P(
     Shapes, Classification,
     ::testing::Values(Case{"straight_to_the_sigmoid", Segment::Sigmoid, Extra::None, LoopKind::None},
                       Case{"straight_to_the_transverse", Segment::Transverse, Extra::None, LoopKind::None},
-                      Case{"alpha", Segment::Sigmoid, Extra::CurlClockwiseInFront, LoopKind::Alpha},
-                      Case{"reverse_alpha", Segment::Sigmoid, Extra::CurlClockwiseBehind,
+                      Case{"alpha", Segment::Sigmoid, Extra::CurlClockwiseBehind, LoopKind::Alpha},
+                      Case{"reverse_alpha", Segment::Sigmoid, Extra::CurlClockwiseInFront,
                            LoopKind::ReverseAlpha},
                       // The handedness types the loop, not the way its projection turns.
                       Case{"alpha_seen_counter_clockwise", Segment::Sigmoid,
-                           Extra::CurlCounterClockwiseBehind, LoopKind::Alpha},
+                           Extra::CurlCounterClockwiseInFront, LoopKind::Alpha},
                       Case{"reverse_alpha_seen_counter_clockwise", Segment::Sigmoid,
-                           Extra::CurlCounterClockwiseInFront, LoopKind::ReverseAlpha},
+                           Extra::CurlCounterClockwiseBehind, LoopKind::ReverseAlpha},
                       Case{"n_loop", Segment::Sigmoid, Extra::AnteriorBulge, LoopKind::N},
                       Case{"deep_transverse", Segment::Transverse, Extra::CurlCounterClockwiseInFront,
                            LoopKind::GammaDeepTransverse}),
@@ -250,7 +251,7 @@ TEST(LoopDetector, LoopResolvesWithHysteresis)
 {
     LoopDetector detector(anatomy().centreline);
     const double at = segmentMiddle(Segment::Sigmoid);
-    const Eigen::Matrix3Xd looped = shaft(at + 0.3, at, Extra::CurlClockwiseInFront);
+    const Eigen::Matrix3Xd looped = shaft(at + 0.3, at, Extra::CurlClockwiseBehind);
     EXPECT_EQ(detector.update(looped, shaftLength(looped)), LoopKind::Alpha);
     const Eigen::Matrix3Xd straight = shaft(at + 0.3, at, Extra::None);
     EXPECT_EQ(detector.update(straight, shaftLength(straight)), LoopKind::None);
@@ -266,8 +267,8 @@ TEST(LoopDetector, ALoopsTypeChangesOnlyOnASteadyNewReading)
     ASSERT_EQ(parameters.typeDwellAnalyses(), kDwell);
     LoopDetector detector(anatomy().centreline, parameters);
     const double at = segmentMiddle(Segment::Sigmoid);
-    const Eigen::Matrix3Xd alpha = shaft(at + 0.3, at, Extra::CurlClockwiseInFront);
-    const Eigen::Matrix3Xd reverse = shaft(at + 0.3, at, Extra::CurlClockwiseBehind);
+    const Eigen::Matrix3Xd alpha = shaft(at + 0.3, at, Extra::CurlClockwiseBehind);
+    const Eigen::Matrix3Xd reverse = shaft(at + 0.3, at, Extra::CurlClockwiseInFront);
     ASSERT_EQ(detector.update(alpha, shaftLength(alpha)), LoopKind::Alpha);
     for (int k = 0; k < 12; ++k) {
         const bool flicker = k % 2 == 0;
@@ -427,21 +428,22 @@ TEST(LoopDetector, ALoopAlongAColonCrossedAtRestIsTypedByTheShaftsCrossingThere)
 {
     // Swept first to the patient's left (counter-clockwise on the anterior
     // view), the sigmoid's limbs cross with the one that leaves it behind:
-    // a left-handed crossing, an alpha. Swept to the right, the sigmoid's
-    // rest path curls the other way where it meets the descending colon.
+    // a left-handed crossing, a reverse alpha. Swept to the right, the
+    // sigmoid's rest path curls the other way where it meets the descending
+    // colon: right-handed, an alpha.
     geometry::ColonAnatomy left;
     const LoopDetector toTheLeft = storedAlongRedundantSigmoid(-1.0, left);
     EXPECT_EQ(toTheLeft.signals().crossings, 0) << "no crossing of its own";
     EXPECT_GE(toTheLeft.signals().sharedCrossings, 1);
     EXPECT_LT(toTheLeft.signals().sharedHandedness, 0);
-    EXPECT_EQ(toTheLeft.current(), LoopKind::Alpha);
+    EXPECT_EQ(toTheLeft.current(), LoopKind::ReverseAlpha);
 
     geometry::ColonAnatomy right;
     const LoopDetector toTheRight = storedAlongRedundantSigmoid(1.0, right);
     EXPECT_EQ(toTheRight.signals().crossings, 0);
     EXPECT_GE(toTheRight.signals().sharedCrossings, 1);
     EXPECT_GT(toTheRight.signals().sharedHandedness, 0);
-    EXPECT_EQ(toTheRight.current(), LoopKind::ReverseAlpha);
+    EXPECT_EQ(toTheRight.current(), LoopKind::Alpha);
 }
 
 }  // namespace
