@@ -170,8 +170,9 @@ void ProcedureLoop::measureSpin(int shift)
     // Each node's spin about the shaft's axis over the last step, from its
     // element's frame (the tip's own frame at the tip): the rotation
     // C_before^T C_now about the frame's forward axis, small over 1 ms
-    // (its angle from the antisymmetric part, sin = angle to 1e-7 at 0.5
-    // degree a step). Nodes that entered since are taken as not spinning.
+    // (its angle from the antisymmetric part, whose sine is within 1.3e-5
+    // of the angle, relative, at half a degree a step). Nodes that entered
+    // since are taken as not spinning.
     const scope::DiscreteRod& rod = m_scope.rod();
     const int n = rod.numNodes();
     const double dt = m_settings.stepping.loopStep;
