@@ -47,14 +47,14 @@ struct Options {
 };
 
 struct Reduction {
-    double alphaFrom = -1.0;     ///< s, first step a crossed loop (alpha or reverse alpha) was held
-    double alphaUntil = -1.0;    ///< s, last step it was held
-    double turnedInAlpha = 0.0;  ///< rad, the handle's rotation while it was held (+ counter-clockwise)
-    std::string kind;            ///< the crossed loop's type as first read
-    int crossingsAfter = -1;     ///< own and shared crossings at the first analysis after it
-    double peakForce = 0.0;      ///< N, the handle
-    double peakTorque = 0.0;     ///< N m, the handle
-    double furthest = 0.0;       ///< m, the tip along the colon
+    double loopFrom = -1.0;     ///< s, first step a crossed loop (alpha or reverse alpha) was held
+    double loopUntil = -1.0;    ///< s, last step it was held
+    double turnedInLoop = 0.0;  ///< rad, the handle's rotation while it was held (+ counter-clockwise)
+    std::string kind;           ///< the crossed loop's type as first read
+    int crossingsAfter = -1;    ///< own and shared crossings at the first analysis after it
+    double peakForce = 0.0;     ///< N, the handle
+    double peakTorque = 0.0;    ///< N m, the handle
+    double furthest = 0.0;      ///< m, the tip along the colon
     bool finite = true;
 };
 
@@ -86,7 +86,7 @@ Reduction run(const Options& o)
     for (long s = 0; s < steps && !expert.finished(); ++s) {
         const procedure::InputSample input = expert.next(loop);
         if (crossed(loop.loops().current())) {
-            r.turnedInAlpha += input.rotation - rotation;
+            r.turnedInLoop += input.rotation - rotation;
         }
         rotation = input.rotation;
         const procedure::ProcedureOutputs& out = loop.step(input);
@@ -95,13 +95,13 @@ Reduction run(const Options& o)
         r.peakTorque = std::max(r.peakTorque, std::abs(out.handleTorque));
         r.furthest = std::max(r.furthest, loop.lastFrame().tipArcLength);
         if (crossed(loop.loops().current())) {
-            if (r.alphaFrom < 0.0) {
-                r.alphaFrom = loop.time();
+            if (r.loopFrom < 0.0) {
+                r.loopFrom = loop.time();
                 r.kind = procedure::loopName(loop.loops().current());
             }
-            r.alphaUntil = loop.time();
+            r.loopUntil = loop.time();
             r.crossingsAfter = -1;
-        } else if (r.alphaFrom >= 0.0 && r.crossingsAfter < 0) {
+        } else if (r.loopFrom >= 0.0 && r.crossingsAfter < 0) {
             const procedure::LoopSignals& signals = loop.loops().signals();
             r.crossingsAfter = signals.crossings + signals.sharedCrossings;
         }
@@ -147,7 +147,7 @@ int main(int argc, char** argv)
     std::printf("%-14s %10s %10s %12s %8s %9s %10s %10s %7s\n", "loop", "from_s", "undone_s", "turned_rad",
                 "cross", "peak_F_N", "peak_T_Nm", "furthest_m", "finite");
     std::printf("%-14s %10.2f %10.2f %12.2f %8d %9.1f %10.3f %10.3f %7s\n",
-                r.kind.empty() ? "-" : r.kind.c_str(), r.alphaFrom, r.alphaUntil, r.turnedInAlpha,
+                r.kind.empty() ? "-" : r.kind.c_str(), r.loopFrom, r.loopUntil, r.turnedInLoop,
                 r.crossingsAfter, r.peakForce, r.peakTorque, r.furthest, r.finite ? "yes" : "no");
     return r.finite ? 0 : 1;
 }

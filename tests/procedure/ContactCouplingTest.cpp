@@ -799,9 +799,8 @@ TEST(ContactCoupling, SpinFrictionActsAtTheShaftsSurface)
 // in one step: five pressed nodes of a 30 cm shaft whose surfaces creep
 // along -z (as a slow spin about +x slides them) get friction and moments
 // that, with the chain at equilibrium under them, carry no node's surface
-// back past where it slid from in one step. The stick's slip compliance
-// bounds the moments' turn of the joints as well as the forces' push; with
-// the forces' alone the moments here would turn the surfaces back further.
+// back past where it slid from in one step: the stick's slip compliance
+// bounds the moments' turn of the joints as well as the forces' push.
 TEST(ContactCoupling, TheSpinFrictionOfManyContactsCannotReverseTheirSlip)
 {
     Colonoscope scope = straightScope(0.3);

@@ -220,17 +220,17 @@ Reduction reduceTheReverseAlpha(double turnRate, double seconds)
         loop.step(input);
         looptest::observe(loop, r.summary);
         const procedure::LoopKind held = loop.loops().current();
+        const procedure::LoopSignals& signals = loop.loops().signals();
+        const int crossings = signals.crossings + signals.sharedCrossings;
         r.held.insert(held);
         if (held == procedure::LoopKind::ReverseAlpha) {
             r.loopFrom = r.loopFrom < 0.0 ? loop.time() : r.loopFrom;
             r.loopUntil = loop.time();
             r.crossingsAfter = -1;
         } else if (r.loopFrom >= 0.0 && r.crossingsAfter < 0) {
-            const procedure::LoopSignals& signals = loop.loops().signals();
-            r.crossingsAfter = signals.crossings + signals.sharedCrossings;
+            r.crossingsAfter = crossings;
         }
-        const procedure::LoopSignals& signals = loop.loops().signals();
-        if (held == procedure::LoopKind::ReverseAlpha || signals.crossings + signals.sharedCrossings > 0) {
+        if (held == procedure::LoopKind::ReverseAlpha || crossings > 0) {
             uncrossedSince = -1.0;
         } else if (uncrossedSince < 0.0) {
             uncrossedSince = loop.time();
