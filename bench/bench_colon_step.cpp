@@ -13,6 +13,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include <cmath>
+
 namespace {
 
 using colonosim::physics::IntegratorKind;
@@ -69,6 +71,29 @@ BENCHMARK(BM_ColonStep)
     ->Unit(benchmark::kMicrosecond);
 
 /// The organ projection, applied once per 1 ms loop step (not per substep).
+// The wall springs' force and damping alone (11,376 springs on the default
+// colon, all awake), the colon step's largest term: items/s is springs per
+// second.
+void BM_WallSprings(benchmark::State& state)
+{
+    const colonosim::bench::BenchScene& s = scene();
+    colonosim::physics::ColonBody colon = s.makeBody();
+    s.load.apply(colon.body, s.load.rampTime);
+    colonosim::physics::Velocities v = colonosim::physics::Velocities::Zero(3, colon.body.numNodes());
+    for (Eigen::Index k = 0; k < v.size(); ++k) {
+        v.data()[k] = 1e-3 * std::sin(static_cast<double>(k));  // every spring damped
+    }
+    colonosim::physics::Forces f = colonosim::physics::Forces::Zero(3, colon.body.numNodes());
+    for (auto _ : state) {
+        colon.springs->addForceAndDamping(colon.body.positions(), v, f);
+        benchmark::ClobberMemory();
+    }
+    state.SetItemsProcessed(state.iterations() * colon.springs->numSprings());
+    state.counters["springs"] = colon.springs->numSprings();
+    state.counters["finite"] = f.allFinite() ? 1.0 : 0.0;
+}
+BENCHMARK(BM_WallSprings)->Unit(benchmark::kMicrosecond);
+
 void BM_OrganProjection(benchmark::State& state)
 {
     const colonosim::bench::BenchScene& s = scene();

@@ -1,5 +1,7 @@
 #include "simcore/physics/SpringSet.h"
 
+#include "simcore/physics/SpringKernel.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -30,6 +32,10 @@ int SpringSet::add(int i, int j, double restLength, double stiffness, double dam
     };
     if (awake(i) || awake(j)) {
         m_active.push_back(s);
+        m_packedSlot.push_back(static_cast<int>(m_packed.size()));
+        m_packed.push_back(packed(static_cast<size_t>(s)));
+    } else {
+        m_packedSlot.push_back(-1);
     }
     return s;
 }
@@ -60,6 +66,7 @@ void SpringSet::setTransverseDamping(double ratio)
                                     " must lie in [0, 1]");
     }
     m_transverseDamping = ratio;
+    repack();
 }
 
 Eigen::Vector3d SpringSet::dampingForce(double c, const Eigen::Vector3d& d, double l2,
@@ -72,8 +79,33 @@ Eigen::Vector3d SpringSet::dampingForce(double c, const Eigen::Vector3d& d, doub
 
 void SpringSet::setStiffness(int s, double stiffness, double damping)
 {
-    m_k[static_cast<size_t>(s)] = stiffness;
-    m_c[static_cast<size_t>(s)] = damping;
+    const auto e = static_cast<size_t>(s);
+    m_k[e] = stiffness;
+    m_c[e] = damping;
+    if (const int slot = m_packedSlot[e]; slot >= 0) {
+        m_packed[static_cast<size_t>(slot)] = packed(e);
+    }
+}
+
+PackedSpring SpringSet::packed(size_t e) const
+{
+    return {m_i[e],
+            m_j[e],
+            m_rest[e],
+            m_k[e],
+            (1.0 - m_transverseDamping) * m_c[e],
+            m_transverseDamping * m_c[e]};
+}
+
+void SpringSet::repack()
+{
+    m_packed.clear();
+    m_packed.reserve(m_active.size());
+    m_packedSlot.assign(m_i.size(), -1);
+    for (const int s : m_active) {
+        m_packedSlot[static_cast<size_t>(s)] = static_cast<int>(m_packed.size());
+        m_packed.push_back(packed(static_cast<size_t>(s)));
+    }
 }
 
 double SpringSet::maxTensileStrain(const Positions& x, SpringFamily family) const
@@ -119,27 +151,7 @@ void SpringSet::addDampingForce(const Positions& x, const Velocities& v, Forces&
 
 void SpringSet::addForceAndDamping(const Positions& x, const Velocities& v, Forces& f) const
 {
-    const int* a = m_i.data();
-    const int* b = m_j.data();
-    for (const int s : m_active) {
-        const auto e = static_cast<size_t>(s);
-        const int i = a[e];
-        const int j = b[e];
-        const Eigen::Vector3d d = x.col(j) - x.col(i);
-        const double l2 = d.squaredNorm();
-        if (l2 < kMinLength * kMinLength) {
-            continue;
-        }
-        const double invL = 1.0 / std::sqrt(l2);
-        const Eigen::Vector3d relativeVelocity = v.col(j) - v.col(i);
-        const double relativeSpeed = d.dot(relativeVelocity) * invL;
-        // Along the spring: k (l - L) + (1 - t) c (u.dv); across it: t c dv.
-        const double tension =
-            m_k[e] * (l2 * invL - m_rest[e]) + (1.0 - m_transverseDamping) * m_c[e] * relativeSpeed;
-        const Eigen::Vector3d fs = (tension * invL) * d + (m_transverseDamping * m_c[e]) * relativeVelocity;
-        f.col(i) += fs;
-        f.col(j) -= fs;
-    }
+    addSpringForces(m_packed, x.data(), v.data(), f.data());
 }
 
 void SpringSet::addCouplings(std::vector<std::pair<int, int>>& pairs) const
@@ -282,6 +294,7 @@ void SpringSet::onActiveSetChanged(const std::vector<std::uint8_t>& awake)
             m_active.push_back(static_cast<int>(e));
         }
     }
+    repack();
 }
 
 }  // namespace colonosim::physics

@@ -16,6 +16,7 @@
 /// Springs shorter than kMinLength (1e-12 m) have no direction and exert no force.
 
 #include "simcore/physics/ForceTerm.h"
+#include "simcore/physics/SpringKernel.h"
 
 #include <string>
 
@@ -25,7 +26,7 @@ enum class SpringFamily : std::uint8_t { Structural, Shear, Bending, Lesion };
 
 class SpringSet final : public ForceTerm {
 public:
-    static constexpr double kMinLength = 1e-12;  ///< m
+    static constexpr double kMinLength = kMinSpringLength;  ///< m
 
     explicit SpringSet(std::string name = "springs") : m_name(std::move(name)) {}
 
@@ -85,6 +86,13 @@ private:
     std::vector<SpringFamily> m_family;
     std::vector<int> m_active;  ///< springs with at least one awake node
     std::vector<std::uint8_t> m_awake;
+    /// The active springs as addForceAndDamping() reads them
+    /// (SpringKernel.h), in m_active's order. Kept in step by every change of
+    /// the springs, their stiffness, the transverse damping or the active set.
+    std::vector<PackedSpring> m_packed;
+    std::vector<int> m_packedSlot;  ///< per spring: its index in m_packed, -1 when inactive
+    void repack();
+    [[nodiscard]] PackedSpring packed(size_t e) const;
     /// One active spring of the frozen system: its block of h D + h^2 K+ is
     /// along I + across u u^T (see linearize).
     struct LinearBlock {

@@ -1,0 +1,163 @@
+// SpringSet::addForceAndDamping() runs over a packed copy of the active
+// springs, four at a time in AVX2's lanes where the processor has them
+// (SpringKernel.h). These tests hold it, and the kernel's one-spring path, to
+// the bits of the per-spring expression (transcribed below with Eigen, as
+// SpringSet.h states it), through every change that repacks the springs: the
+// active set, a stiffness, the transverse damping and a removal. A
+// zero-length spring and a count that leaves springs past the last four are
+// included.
+
+#include "simcore/physics/SpringKernel.h"
+#include "simcore/physics/SpringSet.h"
+
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cstdint>
+#include <random>
+#include <vector>
+
+namespace colonosim::physics {
+namespace {
+
+constexpr int kNodes = 300;
+
+/// The force of every active spring, one after the other in index order, as
+/// SpringSet.h defines it: k (l - L) u + c [(1 - t) u u^T + t I] (v_j - v_i).
+Forces transcription(const SpringSet& springs, const std::vector<std::uint8_t>& awake, const Positions& x,
+                     const Velocities& v)
+{
+    Forces f = Forces::Zero(3, x.cols());
+    const double t = springs.transverseDamping();
+    for (int s = 0; s < springs.numSprings(); ++s) {
+        const int i = springs.nodeA(s);
+        const int j = springs.nodeB(s);
+        if (!awake.empty() && awake[static_cast<size_t>(i)] == 0 && awake[static_cast<size_t>(j)] == 0) {
+            continue;
+        }
+        const Eigen::Vector3d d = x.col(j) - x.col(i);
+        const double l2 = d.squaredNorm();
+        if (l2 < SpringSet::kMinLength * SpringSet::kMinLength) {
+            continue;
+        }
+        const double invL = 1.0 / std::sqrt(l2);
+        const Eigen::Vector3d dv = v.col(j) - v.col(i);
+        const double speed = d.dot(dv) * invL;
+        const double tension = springs.stiffness(s) * (l2 * invL - springs.restLength(s)) +
+                               (1.0 - t) * springs.damping(s) * speed;
+        const Eigen::Vector3d fs = (tension * invL) * d + (t * springs.damping(s)) * dv;
+        f.col(i) += fs;
+        f.col(j) -= fs;
+    }
+    return f;
+}
+
+void expectSameBits(const Forces& expected, const Forces& actual)
+{
+    ASSERT_EQ(expected.cols(), actual.cols());
+    int differing = 0;
+    for (Eigen::Index k = 0; k < expected.size(); ++k) {
+        differing +=
+            std::bit_cast<std::uint64_t>(expected.data()[k]) != std::bit_cast<std::uint64_t>(actual.data()[k])
+                ? 1
+                : 0;
+    }
+    EXPECT_EQ(differing, 0) << "of " << expected.size() << " force components";
+}
+
+class SpringKernel : public ::testing::Test {
+protected:
+    void SetUp() override
+    {
+        std::mt19937_64 random(20261128);
+        std::uniform_real_distribution<double> position(-0.05, 0.05);
+        std::uniform_real_distribution<double> velocity(-0.2, 0.2);
+        std::uniform_int_distribution<int> node(0, kNodes - 1);
+        std::uniform_real_distribution<double> factor(0.5, 1.5);
+        x = Positions(3, kNodes);
+        v = Velocities(3, kNodes);
+        for (Eigen::Index k = 0; k < x.size(); ++k) {
+            x.data()[k] = position(random);
+            v.data()[k] = velocity(random);
+        }
+        x.col(7) = x.col(8);  // spring 0 below has no length
+        springs.setTransverseDamping(0.35);
+        springs.add(7, 8, 0.01, 100.0, 0.2);
+        for (int s = 1; s < 1001; ++s) {
+            int i = node(random);
+            int j = node(random);
+            while (j == i) {
+                j = node(random);
+            }
+            const double length = (x.col(j) - x.col(i)).norm();
+            springs.add(i, j, factor(random) * length, 50.0 * factor(random), 0.1 * factor(random),
+                        s % 3 == 0 ? SpringFamily::Bending : SpringFamily::Structural);
+        }
+    }
+
+    Forces kernel() const
+    {
+        Forces f = Forces::Zero(3, kNodes);
+        springs.addForceAndDamping(x, v, f);
+        return f;
+    }
+
+    SpringSet springs;
+    Positions x;
+    Velocities v;
+};
+
+TEST_F(SpringKernel, AllAwakeGivesTheBitsOfThePerSpringExpression)
+{
+    ASSERT_EQ(springs.numSprings() % 4, 1);
+    expectSameBits(transcription(springs, {}, x, v), kernel());
+}
+
+TEST_F(SpringKernel, OneSpringAtATimeGivesTheSameBits)
+{
+    std::vector<PackedSpring> packed;
+    const double t = springs.transverseDamping();
+    for (int s = 0; s < springs.numSprings(); ++s) {
+        packed.push_back({springs.nodeA(s), springs.nodeB(s), springs.restLength(s), springs.stiffness(s),
+                          (1.0 - t) * springs.damping(s), t * springs.damping(s)});
+    }
+    Forces widest = Forces::Zero(3, kNodes);
+    Forces one = Forces::Zero(3, kNodes);
+    addSpringForces(packed, x.data(), v.data(), widest.data(), SpringLanes::Widest);
+    addSpringForces(packed, x.data(), v.data(), one.data(), SpringLanes::One);
+    expectSameBits(transcription(springs, {}, x, v), one);
+    expectSameBits(one, widest);
+}
+
+TEST_F(SpringKernel, PartlyAwakeGivesTheBitsOfTheActiveSpringsAlone)
+{
+    std::vector<std::uint8_t> awake(kNodes, 0);
+    for (int k = 0; k < kNodes; k += 3) {
+        awake[static_cast<size_t>(k)] = 1;
+    }
+    springs.onActiveSetChanged(awake);
+    const Forces f = kernel();
+    expectSameBits(transcription(springs, awake, x, v), f);
+    // Asleep springs are left out: the forces differ from the whole set's.
+    EXPECT_GT((f - transcription(springs, {}, x, v)).norm(), 0.0);
+}
+
+TEST_F(SpringKernel, ChangedStiffnessDampingAndRemovalAreRepacked)
+{
+    springs.setStiffness(5, 3.0 * springs.stiffness(5), 2.0 * springs.damping(5));
+    springs.setStiffness(600, 0.0, 0.0);
+    expectSameBits(transcription(springs, {}, x, v), kernel());
+    springs.setTransverseDamping(1.0);
+    expectSameBits(transcription(springs, {}, x, v), kernel());
+    springs.remove(17);
+    ASSERT_EQ(springs.numSprings() % 4, 0);
+    expectSameBits(transcription(springs, {}, x, v), kernel());
+    std::vector<std::uint8_t> awake(kNodes, 1);
+    awake[3] = 0;
+    springs.onActiveSetChanged(awake);
+    springs.add(3, 4, 0.02, 10.0, 0.01);  // awake through node 4
+    expectSameBits(transcription(springs, awake, x, v), kernel());
+}
+
+}  // namespace
+}  // namespace colonosim::physics
