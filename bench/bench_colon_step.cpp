@@ -70,7 +70,6 @@ BENCHMARK(BM_ColonStep)
     ->Arg(static_cast<int>(IntegratorKind::BackwardEuler))
     ->Unit(benchmark::kMicrosecond);
 
-/// The organ projection, applied once per 1 ms loop step (not per substep).
 // The wall springs' force and damping alone (11,376 springs on the default
 // colon, all awake), the colon step's largest term: items/s is springs per
 // second.
@@ -94,6 +93,7 @@ void BM_WallSprings(benchmark::State& state)
 }
 BENCHMARK(BM_WallSprings)->Unit(benchmark::kMicrosecond);
 
+/// The organ projection, applied once per 1 ms loop step (not per substep).
 void BM_OrganProjection(benchmark::State& state)
 {
     const colonosim::bench::BenchScene& s = scene();
