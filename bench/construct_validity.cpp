@@ -14,8 +14,8 @@
 //
 // Seed 0 is the default colon; any other seed is a generated patient. The
 // five contact options (contact.elementPoints, contact.sideNormals,
-// contact.pleatSearch, contact.stickingFriction, contact.spinFriction; off
-// by default) and the
+// contact.pleatSearch, contact.stickingFriction, contact.spinFriction;
+// each flag's default is the parameter's: off) and the
 // wall's tissue.haustralAxialRatio (1 by default) and the scope's step guard
 // (scope.maxNodeStep, m; 1 by default: off in practice) apply to both
 // operators' runs.
@@ -57,12 +57,12 @@ struct Run {
 /// The model options both operators run with (ContactParameters.h,
 /// TissueParameters.h).
 struct ModelOptions {
-    double elementPoints = 0.0;
-    double sideNormals = 0.0;
-    double pleatSearch = 0.0;
-    double stickingFriction = 0.0;
-    double spinFriction = 0.0;
-    double haustralAxialRatio = 1.0;
+    double elementPoints = contact::ContactParameters{}.elementPoints;
+    double sideNormals = contact::ContactParameters{}.sideNormals;
+    double pleatSearch = contact::ContactParameters{}.pleatSearch;
+    double stickingFriction = contact::ContactParameters{}.stickingFriction;
+    double spinFriction = contact::ContactParameters{}.spinFriction;
+    double haustralAxialRatio = physics::TissueParameters{}.haustralAxialRatio;
     double maxNodeStep = scope::ScopeParameters{}.maxNodeStep;  ///< m
 };
 

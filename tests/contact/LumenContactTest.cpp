@@ -365,7 +365,9 @@ TEST(LumenContact, APointInAPleatIsFoundThroughThePackedRings)
     ContactParameters pleats;
     pleats.pleatSearch = 1.0;
     LumenContact contact(colon(), pleats);
-    LumenContact without(colon(), ContactParameters{});
+    ContactParameters noPleats;
+    noPleats.pleatSearch = 0.0;
+    LumenContact without(colon(), noPleats);
     Eigen::Matrix3Xd scope(3, 11);
     for (int k = 0; k < 9; ++k) {
         scope.col(k) = Eigen::Vector3d((k + 0.5) * spacing, 0.0, 0.0);

@@ -15,6 +15,7 @@
 #include "simcore/procedure/Operator.h"
 #include "simcore/procedure/ProcedureLoop.h"
 #include "simcore/procedure/WallSite.h"
+#include "tests/procedure/HookedCase.h"
 #include "tests/procedure/LoopObservation.h"
 
 #include <gtest/gtest.h>
@@ -200,9 +201,8 @@ TEST(Adhesions, AnInsertionPushedAgainstAFixedAdhesionStaysStable)
 // pushed carried the tip on along the colon and into the wall.
 TEST(HardCases, AHookedShaftPushedWithTorqueInARedundantSigmoidTwistedHardStaysStable)
 {
-    constexpr int kNovice = 15000;        // steps of the novice's insertion
-    constexpr int kCurl = 7000;           // steps of the hooked, turning push
-    constexpr int kTwist = 2000;          // steps of the hard twist, one way and back
+    constexpr int kNovice = looptest::kHookedNovice;
+    constexpr int kCurl = looptest::kHookedCurl;
     constexpr int kEngagedLimit = 25;     // steps in which the step check rejected a try
     constexpr int kStepsOutside = 50;     // steps with the tip more than a scope diameter in
     constexpr double kForceLimit = 25.0;  // N at the handle: the haptic device's limit
@@ -211,10 +211,8 @@ TEST(HardCases, AHookedShaftPushedWithTorqueInARedundantSigmoidTwistedHardStaysS
     const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(redundant);
     const ProcedureSettings settings;
     ProcedureLoop loop(anatomy, settings);
-    procedure::ScriptedOperator novice(procedure::noviceStyle());
     looptest::RunSummary summary;
     const double diameter = settings.scope.outerDiameter;
-    const double dt = settings.stepping.loopStep;
     int engaged = 0;
     int outside = 0;
     double deepest = 0.0;
@@ -226,24 +224,10 @@ TEST(HardCases, AHookedShaftPushedWithTorqueInARedundantSigmoidTwistedHardStaysS
     double loopReadAt = -1.0;            // s, when a loop was first read in the push; < 0: never
     bool loopInInsertion = false;        // a loop was read while the novice inserted
     std::array<int, 3> outsideIn{};      // steps outside in the insertion, the curl and the twist
-    procedure::InputSample held;
-    for (int s = 0; s < kNovice + kCurl + 2 * kTwist; ++s) {
-        procedure::InputSample input;
-        if (s < kNovice) {
-            input = novice.next(loop);
-            held = input;
-        } else {
-            const int curl = std::min(s - kNovice, kCurl);
-            input = held;
-            input.dialUpDown = 3.0;  // beyond the clinical stop: clamped there
-            input.insertion = held.insertion + 0.05 * curl * dt;
-            input.rotation = held.rotation - 1.0 * curl * dt;  // clockwise seen from the operator
-            const int twist = s - kNovice - kCurl;
-            if (twist > 0) {
-                const double turn = 2.0 * std::numbers::pi / kTwist;  // rad per step
-                input.rotation += turn * (twist <= kTwist ? twist : 2 * kTwist - twist);
-            }
-        }
+    looptest::HookedCaseDriver driver;
+    for (int s = 0; s < looptest::kHookedSteps; ++s) {
+        const procedure::InputSample input = driver.next(loop);
+        const procedure::InputSample& held = driver.held();
         const long triesBefore = loop.tissue().rejectedSteps();
         loop.step(input);
         engaged += loop.tissue().rejectedSteps() > triesBefore ? 1 : 0;
@@ -293,7 +277,7 @@ TEST(HardCases, AHookedShaftPushedWithTorqueInARedundantSigmoidTwistedHardStaysS
     // the most the handle turned (7 rad) and the least shaft inserted (the
     // curl's start). The device clamps what it renders at its 1 N m; more
     // than a held tip's would be torque the contact made.
-    const double heldTip = settings.scope.torsionalRigidity * mostTurned / held.insertion;
+    const double heldTip = settings.scope.torsionalRigidity * mostTurned / driver.held().insertion;
     RecordProperty("held_tip_torque_Nm", std::to_string(heldTip));
     EXPECT_LT(std::max(peakTorque[1], peakTorque[2]), heldTip) << "N m, against a held tip's";
     EXPECT_GT(mostTurning, 2.0 * std::numbers::pi)
