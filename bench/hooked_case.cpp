@@ -11,14 +11,17 @@
 // peak handle force and torque, and the deepest the tip went.
 //
 //   hooked_case [--element-points 0-3] [--side-normals 0|1] [--pleat-search 0|1]
+//               [--max-node-step M]
 //
-// Each flag's default is the parameter's (contact/ContactParameters.h).
+// Each flag's default is the parameter's (contact/ContactParameters.h; the
+// scope's step guard scope.maxNodeStep, m, scope/ScopeParameters.h).
 
 #include "bench/ListArgument.h"
 #include "simcore/contact/ContactParameters.h"
 #include "simcore/geometry/ProceduralColon.h"
 #include "simcore/procedure/Operator.h"
 #include "simcore/procedure/ProcedureLoop.h"
+#include "simcore/scope/ScopeParameters.h"
 #include "tests/procedure/HookedCase.h"
 #include "tests/procedure/LoopObservation.h"
 
@@ -64,9 +67,14 @@ int main(int argc, char** argv)
                 const auto& spec = contact::ContactParameters::pleatSearchSpec;
                 settings.contact.pleatSearch =
                     bench::parseList(flag, value, spec.minValue, spec.maxValue).front();
+            } else if (flag == "--max-node-step") {
+                const auto& spec = scope::ScopeParameters::maxNodeStepSpec;
+                settings.scope.maxNodeStep =
+                    bench::parseList(flag, value, spec.minValue, spec.maxValue).front();
             } else {
                 throw std::invalid_argument("unknown option '" + flag +
-                                            "' (allowed: --element-points, --side-normals, --pleat-search)");
+                                            "' (allowed: --element-points, --side-normals, --pleat-search, "
+                                            "--max-node-step)");
             }
         });
     } catch (const std::exception& error) {
@@ -76,8 +84,10 @@ int main(int argc, char** argv)
     const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(looptest::redundantSigmoid());
     procedure::ProcedureLoop loop(anatomy, settings);
     const double diameter = settings.scope.outerDiameter;
-    std::printf("hooked case; contact options: elementPoints %g, sideNormals %g, pleatSearch %g\n",
-                settings.contact.elementPoints, settings.contact.sideNormals, settings.contact.pleatSearch);
+    std::printf("hooked case; contact options: elementPoints %g, sideNormals %g, pleatSearch %g; "
+                "scope.maxNodeStep %g m\n",
+                settings.contact.elementPoints, settings.contact.sideNormals, settings.contact.pleatSearch,
+                settings.scope.maxNodeStep);
     std::printf("%7s %9s %10s %10s %9s %8s %9s  %s\n", "t_s", "force_N", "torque_Nm", "tip_in_mm", "outside",
                 "retried", "stored_m", "loop");
     std::array<Phase, 3> phases{Phase{"insertion"}, Phase{"hooked push"}, Phase{"twist"}};
