@@ -19,7 +19,7 @@
 #include "bench/ListArgument.h"
 #include "simcore/contact/ContactParameters.h"
 #include "simcore/geometry/ProceduralColon.h"
-#include "simcore/procedure/Operator.h"
+#include "simcore/params/Parameter.h"
 #include "simcore/procedure/ProcedureLoop.h"
 #include "simcore/scope/ScopeParameters.h"
 #include "tests/procedure/HookedCase.h"
@@ -55,22 +55,17 @@ int main(int argc, char** argv)
     procedure::ProcedureSettings settings;
     try {
         bench::forEachOption(argc, argv, [&](const std::string& flag, const std::string& value) {
+            const auto parse = [&](const params::ParameterSpec& spec) {
+                return bench::parseList(flag, value, spec.minValue, spec.maxValue).front();
+            };
             if (flag == "--element-points") {
-                const auto& spec = contact::ContactParameters::elementPointsSpec;
-                settings.contact.elementPoints =
-                    bench::parseList(flag, value, spec.minValue, spec.maxValue).front();
+                settings.contact.elementPoints = parse(contact::ContactParameters::elementPointsSpec);
             } else if (flag == "--side-normals") {
-                const auto& spec = contact::ContactParameters::sideNormalsSpec;
-                settings.contact.sideNormals =
-                    bench::parseList(flag, value, spec.minValue, spec.maxValue).front();
+                settings.contact.sideNormals = parse(contact::ContactParameters::sideNormalsSpec);
             } else if (flag == "--pleat-search") {
-                const auto& spec = contact::ContactParameters::pleatSearchSpec;
-                settings.contact.pleatSearch =
-                    bench::parseList(flag, value, spec.minValue, spec.maxValue).front();
+                settings.contact.pleatSearch = parse(contact::ContactParameters::pleatSearchSpec);
             } else if (flag == "--max-node-step") {
-                const auto& spec = scope::ScopeParameters::maxNodeStepSpec;
-                settings.scope.maxNodeStep =
-                    bench::parseList(flag, value, spec.minValue, spec.maxValue).front();
+                settings.scope.maxNodeStep = parse(scope::ScopeParameters::maxNodeStepSpec);
             } else {
                 throw std::invalid_argument("unknown option '" + flag +
                                             "' (allowed: --element-points, --side-normals, --pleat-search, "
@@ -91,24 +86,25 @@ int main(int argc, char** argv)
     std::printf("%7s %9s %10s %10s %9s %8s %9s  %s\n", "t_s", "force_N", "torque_Nm", "tip_in_mm", "outside",
                 "retried", "stored_m", "loop");
     std::array<Phase, 3> phases{Phase{"insertion"}, Phase{"hooked push"}, Phase{"twist"}};
-    long outside = 0;
-    long retried = 0;
     looptest::HookedCaseDriver driver;
     for (int s = 0; s < looptest::kHookedSteps; ++s) {
         const long triesBefore = loop.tissue().rejectedSteps();
         loop.step(driver.next(loop));
-        const int curlEnd = looptest::kHookedNovice + looptest::kHookedCurl;
-        Phase& phase = phases[s < looptest::kHookedNovice ? 0 : (s < curlEnd ? 1 : 2)];
-        const bool wasRetried = loop.tissue().rejectedSteps() > triesBefore;
+        Phase& phase = phases[driver.phase()];
         const double depth = loop.lumen().contacts().empty() ? 0.0 : loop.lumen().contacts().back().depth;
         phase.outside += depth > diameter ? 1 : 0;
-        phase.retried += wasRetried ? 1 : 0;
+        phase.retried += loop.tissue().rejectedSteps() > triesBefore ? 1 : 0;
         phase.peakForce = std::max(phase.peakForce, std::abs(loop.outputs().handleForce));
         phase.peakTorque = std::max(phase.peakTorque, std::abs(loop.outputs().handleTorque));
         phase.deepest = std::max(phase.deepest, depth);
-        outside += depth > diameter ? 1 : 0;
-        retried += wasRetried ? 1 : 0;
         if (s >= looptest::kHookedNovice - 1000 && s % kPrintEvery == kPrintEvery - 1) {
+            // Running totals over the phases so far.
+            long outside = 0;
+            long retried = 0;
+            for (const Phase& p : phases) {
+                outside += p.outside;
+                retried += p.retried;
+            }
             std::printf("%7.2f %9.1f %10.2f %10.1f %9ld %8ld %9.3f  %s\n", loop.time(),
                         loop.outputs().handleForce, loop.outputs().handleTorque, depth * 1e3, outside,
                         retried, loop.loops().signals().storedShaft,

@@ -14,6 +14,7 @@
 #include "simcore/procedure/ProcedureLoop.h"
 
 #include <algorithm>
+#include <cstddef>
 #include <numbers>
 
 namespace colonosim::looptest {
@@ -54,6 +55,13 @@ public:
         return hookedInput(m_held, m_step++, loop.trace().loopStep);
     }
     [[nodiscard]] bool finished() const override { return m_step >= kHookedSteps; }
+    /// The phase of the last input: 0 the novice's insertion, 1 the hooked
+    /// push, 2 the twist.
+    [[nodiscard]] size_t phase() const
+    {
+        const int last = m_step - 1;
+        return last < kHookedNovice ? 0 : (last < kHookedNovice + kHookedCurl ? 1 : 2);
+    }
     /// The novice's last input, where the hooked push began.
     [[nodiscard]] const procedure::InputSample& held() const { return m_held; }
 

@@ -201,8 +201,6 @@ TEST(Adhesions, AnInsertionPushedAgainstAFixedAdhesionStaysStable)
 // pushed carried the tip on along the colon and into the wall.
 TEST(HardCases, AHookedShaftPushedWithTorqueInARedundantSigmoidTwistedHardStaysStable)
 {
-    constexpr int kNovice = looptest::kHookedNovice;
-    constexpr int kCurl = looptest::kHookedCurl;
     constexpr int kEngagedLimit = 25;     // steps in which the step check rejected a try
     constexpr int kStepsOutside = 50;     // steps with the tip more than a scope diameter in
     constexpr double kForceLimit = 25.0;  // N at the handle: the haptic device's limit
@@ -234,7 +232,7 @@ TEST(HardCases, AHookedShaftPushedWithTorqueInARedundantSigmoidTwistedHardStaysS
         looptest::observe(loop, summary);
         const double depth = loop.lumen().contacts().back().depth;
         outside += depth > diameter ? 1 : 0;
-        const size_t phase = s < kNovice ? 0 : (s < kNovice + kCurl ? 1 : 2);
+        const size_t phase = driver.phase();
         outsideIn[phase] += depth > diameter ? 1 : 0;
         deepest = std::max(deepest, depth);
         peakTorque[phase] = std::max(peakTorque[phase], std::abs(loop.outputs().handleTorque));
