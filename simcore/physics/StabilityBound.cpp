@@ -145,7 +145,7 @@ double exactOmegaMax(const TissueBody& body)
     return std::sqrt(std::max(0.0, solver.eigenvalues().maxCoeff()));
 }
 
-double powerIterationOmegaMax(const TissueBody& body, int iterations)
+TopMode powerIterationTopMode(const TissueBody& body, int iterations)
 {
     const std::vector<int>& nodes = body.integratedNodes();
     const Eigen::VectorXd& mass = body.masses();
@@ -157,22 +157,46 @@ double powerIterationOmegaMax(const TissueBody& body, int iterations)
     }
     Eigen::Matrix3Xd y;
     Eigen::Matrix3Xd df;
+    // y = M^-1/2 q, scattered over the integrated nodes.
+    const auto scaled = [&](const Eigen::Matrix3Xd& from) {
+        y = Eigen::Matrix3Xd::Zero(3, body.numNodes());
+        for (const int i : nodes) {
+            y.col(i) = from.col(i) / std::sqrt(mass[i]);
+        }
+    };
+    // q . M^-1/2 df, the Rayleigh quotient's numerator with the sign of -K and -D.
+    const auto quotient = [&](const Eigen::Matrix3Xd& unit) {
+        double sum = 0.0;
+        for (const int i : nodes) {
+            sum -= unit.col(i).dot(df.col(i)) / std::sqrt(mass[i]);
+        }
+        return sum;
+    };
     double lambda = 0.0;
     for (int it = 0; it < iterations; ++it) {
         q /= q.norm();
-        y = Eigen::Matrix3Xd::Zero(3, body.numNodes());
-        for (const int i : nodes) {
-            y.col(i) = q.col(i) / std::sqrt(mass[i]);
-        }
+        scaled(q);
         body.stiffnessProduct(body.positions(), y, df);
+        lambda = quotient(q);
         Eigen::Matrix3Xd next = Eigen::Matrix3Xd::Zero(3, body.numNodes());
         for (const int i : nodes) {
             next.col(i) = -df.col(i) / std::sqrt(mass[i]);
         }
-        lambda = (q.array() * next.array()).sum();
         q = next;
     }
-    return std::sqrt(std::max(0.0, lambda));
+    TopMode mode;
+    mode.omega = std::sqrt(std::max(0.0, lambda));
+    q /= q.norm();
+    scaled(q);
+    body.dampingProduct(body.positions(), y, df);
+    mode.dampingRate = quotient(q);
+    mode.dampingRatio = mode.omega > 0.0 ? mode.dampingRate / (2.0 * mode.omega) : 0.0;
+    return mode;
+}
+
+double powerIterationOmegaMax(const TissueBody& body, int iterations)
+{
+    return powerIterationTopMode(body, iterations).omega;
 }
 
 }  // namespace colonosim::physics

@@ -53,4 +53,16 @@ struct StabilityEstimate {
 /// any size; converges from below.
 [[nodiscard]] double powerIterationOmegaMax(const TissueBody& body, int iterations);
 
+/// The highest mode as power iteration finds it: its frequency and the
+/// damping it gets, the Rayleigh quotients of M^-1/2 K M^-1/2 and
+/// M^-1/2 D M^-1/2 at the converged vector (the mode's own damping where D
+/// is proportional to K; with the wall's transverse damping, the damping of
+/// that shape).
+struct TopMode {
+    double omega = 0.0;         ///< rad/s
+    double dampingRate = 0.0;   ///< c of x'' = -omega^2 x - c x', 1/s
+    double dampingRatio = 0.0;  ///< zeta = c / (2 omega)
+};
+[[nodiscard]] TopMode powerIterationTopMode(const TissueBody& body, int iterations);
+
 }  // namespace colonosim::physics

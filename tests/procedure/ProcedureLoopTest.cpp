@@ -5,6 +5,7 @@
 #include "simcore/procedure/ProcedureLoop.h"
 #include "simcore/contact/LumenTube.h"
 #include "simcore/geometry/ProceduralColon.h"
+#include "simcore/physics/StabilityBound.h"
 #include "simcore/procedure/Operator.h"
 #include "tests/procedure/LoopObservation.h"
 
@@ -12,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <limits>
 #include <memory>
 #include <string>
@@ -44,6 +46,25 @@ TEST(ProcedureLoop, TheExpertRunsStably)
     EXPECT_GT(loop.scope().numInsertedNodes(), 4) << "the scope went in";
     EXPECT_GT(loop.recording().samples.size(), 300U) << "100 Hz samples";
     EXPECT_TRUE(loop.bleedingMarks().empty()) << "the expert does not press the wall";
+}
+
+// The wall's stiffness-proportional damping gives the declared damping
+// ratio of 0.39 in the default colon's highest mode (tissue.dampingTime),
+// the Gershgorin bound stays above that mode's frequency, and the stepping
+// plan of the loop at rest takes the symplectic Euler steps that the bound
+// allows for that damping: 14 a loop step (0.2 of damping would allow 11;
+// see the parameter for why it is not taken).
+TEST(ProcedureLoop, TheWallIsDampedAsDeclaredInItsHighestMode)
+{
+    const ProcedureLoop loop(defaultColon(), ProcedureSettings{});
+    const physics::TopMode top = physics::powerIterationTopMode(loop.colon().body, 3000);
+    std::cout << "highest mode " << top.omega << " rad/s, damping ratio " << top.dampingRatio << "; "
+              << loop.tissue().planNote() << "\n";
+    EXPECT_NEAR(top.dampingRatio, 0.39, 0.02);
+    EXPECT_GT(top.omega, 12000.0);
+    const physics::StabilityEstimate bound = physics::estimateStability(loop.colon().body);
+    EXPECT_GE(bound.omegaMax, top.omega) << "the bound is above the mode that power iteration converges to";
+    EXPECT_EQ(loop.tissue().substeps(), 14) << loop.tissue().planNote();
 }
 
 // A session is determined by the case, the build and the input trace:
