@@ -79,7 +79,7 @@ struct TissueParameters {
         "beta in c = beta k for every wall, mesentery and anchor spring (stiffness-proportional damping)",
         "assumption, no measured value: a damping ratio of 0.39 in the highest wall mode of the default "
         "colon (14,137 rad/s; tests/procedure/ProcedureLoopTest.cpp). Half of it, 0.2, would let symplectic "
-        "Euler take 11 substeps a loop step instead of 14, but a colon pressed by a still scope then kept "
+        "Euler take 12 substeps a loop step instead of 14, but a colon pressed by a still scope then kept "
         "ringing: 1.3 mJ and a handle force swinging by 2 N 1 s after the scope stopped"};
     static constexpr ParameterSpec transverseDampingSpec{
         "transverseDampingRatio",

@@ -52,7 +52,7 @@ TEST(ProcedureLoop, TheExpertRunsStably)
 // ratio of 0.39 in the default colon's highest mode (tissue.dampingTime),
 // the Gershgorin bound stays above that mode's frequency, and the stepping
 // plan of the loop at rest takes the symplectic Euler steps that the bound
-// allows for that damping: 14 a loop step (0.2 of damping would allow 11;
+// allows for that damping: 14 a loop step (0.2 of damping would allow 12;
 // see the parameter for why it is not taken).
 TEST(ProcedureLoop, TheWallIsDampedAsDeclaredInItsHighestMode)
 {
