@@ -157,39 +157,34 @@ TopMode powerIterationTopMode(const TissueBody& body, int iterations)
     }
     Eigen::Matrix3Xd y;
     Eigen::Matrix3Xd df;
-    // y = M^-1/2 q, scattered over the integrated nodes.
-    const auto scaled = [&](const Eigen::Matrix3Xd& from) {
+    // M^-1/2 (-A) M^-1/2 q over the integrated nodes, A the stiffness K or the damping D.
+    const auto apply = [&](bool damping) {
         y = Eigen::Matrix3Xd::Zero(3, body.numNodes());
         for (const int i : nodes) {
-            y.col(i) = from.col(i) / std::sqrt(mass[i]);
+            y.col(i) = q.col(i) / std::sqrt(mass[i]);
         }
-    };
-    // q . M^-1/2 df, the Rayleigh quotient's numerator with the sign of -K and -D.
-    const auto quotient = [&](const Eigen::Matrix3Xd& unit) {
-        double sum = 0.0;
+        if (damping) {
+            body.dampingProduct(body.positions(), y, df);
+        } else {
+            body.stiffnessProduct(body.positions(), y, df);
+        }
+        Eigen::Matrix3Xd out = Eigen::Matrix3Xd::Zero(3, body.numNodes());
         for (const int i : nodes) {
-            sum -= unit.col(i).dot(df.col(i)) / std::sqrt(mass[i]);
+            out.col(i) = -df.col(i) / std::sqrt(mass[i]);
         }
-        return sum;
+        return out;
     };
     double lambda = 0.0;
     for (int it = 0; it < iterations; ++it) {
         q /= q.norm();
-        scaled(q);
-        body.stiffnessProduct(body.positions(), y, df);
-        lambda = quotient(q);
-        Eigen::Matrix3Xd next = Eigen::Matrix3Xd::Zero(3, body.numNodes());
-        for (const int i : nodes) {
-            next.col(i) = -df.col(i) / std::sqrt(mass[i]);
-        }
+        Eigen::Matrix3Xd next = apply(false);
+        lambda = (q.array() * next.array()).sum();
         q = next;
     }
     TopMode mode;
     mode.omega = std::sqrt(std::max(0.0, lambda));
     q /= q.norm();
-    scaled(q);
-    body.dampingProduct(body.positions(), y, df);
-    mode.dampingRate = quotient(q);
+    mode.dampingRate = (q.array() * apply(true).array()).sum();
     mode.dampingRatio = mode.omega > 0.0 ? mode.dampingRate / (2.0 * mode.omega) : 0.0;
     return mode;
 }
