@@ -7,14 +7,20 @@
 /// Each spring's force on its first end (the second takes its negative) is
 ///   f = s d + across dv,  s = (k (l2 / l - L) + along (d.dv / l)) / l,
 /// d = x_j - x_i, l2 = (dx dx + dy dy) + dz dz, l = sqrt(l2), dv = v_j - v_i,
-/// along = (1 - t) c and across = t c (SpringSet.h). With AVX2 four springs
-/// are computed at once, one in each lane; every lane runs the same IEEE
-/// operations in the same order as the scalar form (no fused multiply-adds),
-/// and the four forces are then added to the nodes one spring after the other
-/// in the springs' order. The sums are therefore those of one spring at a
-/// time, bit for bit, whichever path runs (tests/physics/SpringKernelTest.cpp).
+/// along = (1 - t) c and across = t c (SpringSet.h). It runs in two passes.
+///  1. Every spring's force, each independent of the others: with AVX2 four
+///     springs at once, one in each lane, every lane running the same IEEE
+///     operations in the same order as the scalar form (no fused
+///     multiply-adds), into a per-spring scratch.
+///  2. Each node sums its springs' forces in the springs' order (SpringGather),
+///     held in registers and stored once: the additions a node receives, and
+///     their order, are those of adding one spring after the other, so the
+///     sums are the same bit for bit (tests/physics/SpringKernelTest.cpp).
+///     Adding into the nodes spring by spring instead made consecutive
+///     springs of one node wait for each other's stores.
 
 #include <span>
+#include <vector>
 
 namespace colonosim::physics {
 
@@ -33,9 +39,31 @@ struct PackedSpring {
 /// has (AVX2 where present), or one spring at a time (the reference path).
 enum class SpringLanes { Widest, One };
 
-/// Adds each spring's force to f (3 x nodes, column-major, as x and v), in
-/// the springs' order. A spring shorter than kMinSpringLength adds none.
-void addSpringForces(std::span<const PackedSpring> springs, const double* x, const double* v, double* f,
-                     SpringLanes lanes = SpringLanes::Widest);
+/// Each node's springs in the springs' order, as the second pass sums them,
+/// and the first pass's per-spring scratch. Depends only on the springs' ends
+/// and order: rebuild it when springs are added, removed or reordered.
+class SpringGather {
+public:
+    /// From the springs' ends, in their order.
+    void build(std::span<const PackedSpring> springs);
+    [[nodiscard]] size_t numSprings() const { return m_numSprings; }
+
+private:
+    friend void addSpringForces(std::span<const PackedSpring>, SpringGather&, const double*, const double*,
+                                double*, SpringLanes);
+    size_t m_numSprings = 0;
+    std::vector<int> m_nodes;    ///< nodes with at least one spring, ascending
+    std::vector<int> m_first;    ///< per node of m_nodes, its first entry; one past the last at the back
+    std::vector<int> m_spring;   ///< per entry: the spring, in the springs' order within a node
+    std::vector<double> m_sign;  ///< per entry: +1 for the spring's first end, -1 for its second
+    // Pass 1's results, per spring: squared length (m^2) and force on the first end (N).
+    std::vector<double> m_l2, m_fx, m_fy, m_fz;
+};
+
+/// Adds each spring's force to f (3 x nodes, column-major, as x and v), with
+/// the sums of adding them in the springs' order. A spring shorter than
+/// kMinSpringLength adds none. `gather` must have been built from `springs`.
+void addSpringForces(std::span<const PackedSpring> springs, SpringGather& gather, const double* x,
+                     const double* v, double* f, SpringLanes lanes = SpringLanes::Widest);
 
 }  // namespace colonosim::physics

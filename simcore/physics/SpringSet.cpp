@@ -34,6 +34,7 @@ int SpringSet::add(int i, int j, double restLength, double stiffness, double dam
         m_active.push_back(s);
         m_packedSlot.push_back(static_cast<int>(m_packed.size()));
         m_packed.push_back(packed(static_cast<size_t>(s)));
+        m_gatherStale = true;
     } else {
         m_packedSlot.push_back(-1);
     }
@@ -106,6 +107,7 @@ void SpringSet::repack()
         m_packedSlot[static_cast<size_t>(s)] = static_cast<int>(m_packed.size());
         m_packed.push_back(packed(static_cast<size_t>(s)));
     }
+    m_gatherStale = true;
 }
 
 double SpringSet::maxTensileStrain(const Positions& x, SpringFamily family) const
@@ -151,7 +153,11 @@ void SpringSet::addDampingForce(const Positions& x, const Velocities& v, Forces&
 
 void SpringSet::addForceAndDamping(const Positions& x, const Velocities& v, Forces& f) const
 {
-    addSpringForces(m_packed, x.data(), v.data(), f.data());
+    if (m_gatherStale) {
+        m_gather.build(m_packed);
+        m_gatherStale = false;
+    }
+    addSpringForces(m_packed, m_gather, x.data(), v.data(), f.data());
 }
 
 void SpringSet::addCouplings(std::vector<std::pair<int, int>>& pairs) const

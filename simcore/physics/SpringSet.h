@@ -91,6 +91,10 @@ private:
     /// the springs, their stiffness, the transverse damping or the active set.
     std::vector<PackedSpring> m_packed;
     std::vector<int> m_packedSlot;  ///< per spring: its index in m_packed, -1 when inactive
+    /// Each node's packed springs (SpringKernel.h), rebuilt on the next force
+    /// evaluation after m_packed gains, loses or reorders springs.
+    mutable SpringGather m_gather;
+    mutable bool m_gatherStale = true;
     void repack();
     [[nodiscard]] PackedSpring packed(size_t e) const;
     /// One active spring of the frozen system: its block of h D + h^2 K+ is
