@@ -93,6 +93,24 @@ void BM_WallSprings(benchmark::State& state)
 }
 BENCHMARK(BM_WallSprings)->Unit(benchmark::kMicrosecond);
 
+/// The insufflation's pressure on every wall triangle (the default colon, all
+/// awake), the colon step's second term: items/s is triangles per second.
+void BM_Insufflation(benchmark::State& state)
+{
+    const colonosim::bench::BenchScene& s = scene();
+    colonosim::physics::ColonBody colon = s.makeBody();
+    colonosim::physics::Forces f = colonosim::physics::Forces::Zero(3, colon.body.numNodes());
+    for (auto _ : state) {
+        colon.insufflation->addForce(colon.body.positions(), f);
+        benchmark::ClobberMemory();
+    }
+    const auto triangles = static_cast<double>(s.anatomy.physicsMesh.numTriangles());
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(triangles));
+    state.counters["triangles"] = triangles;
+    state.counters["finite"] = f.allFinite() ? 1.0 : 0.0;
+}
+BENCHMARK(BM_Insufflation)->Unit(benchmark::kMicrosecond);
+
 /// The organ projection, applied once per 1 ms loop step (not per substep).
 void BM_OrganProjection(benchmark::State& state)
 {

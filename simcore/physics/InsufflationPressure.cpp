@@ -1,5 +1,7 @@
 #include "simcore/physics/InsufflationPressure.h"
 
+#include "simcore/physics/NodeLanes.h"
+
 #include <Eigen/Geometry>
 
 #include <algorithm>
@@ -13,17 +15,64 @@ InsufflationPressure::InsufflationPressure(std::vector<std::array<int, 3>> trian
     onActiveSetChanged({});
 }
 
+namespace {
+
+#if defined(__x86_64__)
+/// The nodal force scale (x1 - x0) x (x2 - x0) of the active triangles, four
+/// at once, lane k from triangle e + k, with the operations of Eigen's cross
+/// product in each lane; returns how many it did (a multiple of 4).
+__attribute__((target("avx2"))) size_t pressureByFour(const std::vector<std::array<int, 3>>& triangles,
+                                                      const std::vector<int>& active, const double* x,
+                                                      double scale, double* fx, double* fy, double* fz)
+{
+    const __m256d s = _mm256_set1_pd(scale);
+    size_t e = 0;
+    for (; e + 4 <= active.size(); e += 4) {
+        const auto& t0 = triangles[static_cast<size_t>(active[e])];
+        const auto& t1 = triangles[static_cast<size_t>(active[e + 1])];
+        const auto& t2 = triangles[static_cast<size_t>(active[e + 2])];
+        const auto& t3 = triangles[static_cast<size_t>(active[e + 3])];
+        const lanes::Rows p0 = lanes::nodes(x, t0[0], t1[0], t2[0], t3[0]);
+        const lanes::Rows p1 = lanes::nodes(x, t0[1], t1[1], t2[1], t3[1]);
+        const lanes::Rows p2 = lanes::nodes(x, t0[2], t1[2], t2[2], t3[2]);
+        const __m256d a0 = _mm256_sub_pd(p1.r0, p0.r0);
+        const __m256d a1 = _mm256_sub_pd(p1.r1, p0.r1);
+        const __m256d a2 = _mm256_sub_pd(p1.r2, p0.r2);
+        const __m256d b0 = _mm256_sub_pd(p2.r0, p0.r0);
+        const __m256d b1 = _mm256_sub_pd(p2.r1, p0.r1);
+        const __m256d b2 = _mm256_sub_pd(p2.r2, p0.r2);
+        const __m256d c0 = _mm256_sub_pd(_mm256_mul_pd(a1, b2), _mm256_mul_pd(a2, b1));
+        const __m256d c1 = _mm256_sub_pd(_mm256_mul_pd(a2, b0), _mm256_mul_pd(a0, b2));
+        const __m256d c2 = _mm256_sub_pd(_mm256_mul_pd(a0, b1), _mm256_mul_pd(a1, b0));
+        _mm256_storeu_pd(fx + e, _mm256_mul_pd(s, c0));
+        _mm256_storeu_pd(fy + e, _mm256_mul_pd(s, c1));
+        _mm256_storeu_pd(fz + e, _mm256_mul_pd(s, c2));
+    }
+    return e;
+}
+#endif
+
+}  // namespace
+
 void InsufflationPressure::addForce(const Positions& x, Forces& f) const
 {
     const double scale = m_pressure / 6.0;  // p/3 times the 1/2 of the area vector
-    for (const int t : m_active) {
-        const auto& tri = m_triangles[static_cast<size_t>(t)];
+    size_t e = 0;
+#if defined(__x86_64__)
+    static const bool avx2 = __builtin_cpu_supports("avx2") != 0;
+    if (avx2) {
+        e = pressureByFour(m_triangles, m_active, x.data(), scale, m_fx.data(), m_fy.data(), m_fz.data());
+    }
+#endif
+    for (; e < m_active.size(); ++e) {
+        const auto& tri = m_triangles[static_cast<size_t>(m_active[e])];
         const Eigen::Vector3d x0 = x.col(tri[0]);
         const Eigen::Vector3d fn = scale * (x.col(tri[1]) - x0).cross(x.col(tri[2]) - x0);
-        f.col(tri[0]) += fn;
-        f.col(tri[1]) += fn;
-        f.col(tri[2]) += fn;
+        m_fx[e] = fn.x();
+        m_fy[e] = fn.y();
+        m_fz[e] = fn.z();
     }
+    m_gather.sumInto(f.data(), m_fx.data(), m_fy.data(), m_fz.data());
 }
 
 void InsufflationPressure::addStiffnessProduct(const Positions& x, const Eigen::Matrix3Xd& dx,
@@ -73,6 +122,17 @@ void InsufflationPressure::onActiveSetChanged(const std::vector<std::uint8_t>& a
             m_active.push_back(static_cast<int>(t));
         }
     }
+    std::vector<int> corners;
+    corners.reserve(3 * m_active.size());
+    for (const int t : m_active) {
+        const auto& tri = m_triangles[static_cast<size_t>(t)];
+        corners.insert(corners.end(), tri.begin(), tri.end());
+    }
+    constexpr double kSigns[] = {1.0, 1.0, 1.0};  // each corner takes the same force
+    m_gather.build(corners, kSigns);
+    m_fx.resize(m_active.size());
+    m_fy.resize(m_active.size());
+    m_fz.resize(m_active.size());
 }
 
 }  // namespace colonosim::physics

@@ -7,8 +7,14 @@
 /// The Jacobian is not symmetric, so the implicit solver treats this force
 /// explicitly. Follower loads have no potential; potentialEnergy() is 0.
 /// Range: 9-57 mmHg with the tip free during colonoscopy (reference table).
+/// addForce() runs in two passes, with the bits of adding the triangles into
+/// their nodes one after the other: every active triangle's nodal force (four
+/// at once in AVX2's lanes where the processor has them, each lane doing the
+/// scalar form's IEEE operations), then each node's triangles summed in the
+/// triangles' order (NodeGather.h; tests/physics/PressureKernelTest.cpp).
 
 #include "simcore/physics/ForceTerm.h"
+#include "simcore/physics/NodeGather.h"
 
 #include <array>
 
@@ -37,6 +43,9 @@ private:
     std::vector<std::array<int, 3>> m_triangles;
     std::vector<int> m_active;
     double m_pressure;
+    NodeGather m_gather;  ///< the active triangles' nodes
+    /// The first pass's nodal force per active triangle, N (scratch).
+    mutable std::vector<double> m_fx, m_fy, m_fz;
 };
 
 }  // namespace colonosim::physics

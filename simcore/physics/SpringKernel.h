@@ -12,12 +12,12 @@
 ///     springs at once, one in each lane, every lane running the same IEEE
 ///     operations in the same order as the scalar form (no fused
 ///     multiply-adds), into a per-spring scratch.
-///  2. Each node sums its springs' forces in the springs' order (SpringGather),
-///     held in registers and stored once: the additions a node receives, and
-///     their order, are those of adding one spring after the other, so the
-///     sums are the same bit for bit (tests/physics/SpringKernelTest.cpp).
-///     Adding into the nodes spring by spring instead made consecutive
-///     springs of one node wait for each other's stores.
+///  2. Each node sums its springs' forces in the springs' order
+///     (NodeGather.h): the same additions in the same order as adding one
+///     spring after the other, so the sums are the same bit for bit
+///     (tests/physics/SpringKernelTest.cpp).
+
+#include "simcore/physics/NodeGather.h"
 
 #include <span>
 #include <vector>
@@ -39,23 +39,19 @@ struct PackedSpring {
 /// has (AVX2 where present), or one spring at a time (the reference path).
 enum class SpringLanes { Widest, One };
 
-/// Each node's springs in the springs' order, as the second pass sums them,
-/// and the first pass's per-spring scratch. Depends only on the springs' ends
-/// and order: rebuild it when springs are added, removed or reordered.
+/// The second pass's order (each node's springs in the springs' order) and
+/// the first pass's per-spring scratch. Depends only on the springs' ends and
+/// order: rebuild it when springs are added, removed or reordered.
 class SpringGather {
 public:
     /// From the springs' ends, in their order.
     void build(std::span<const PackedSpring> springs);
-    [[nodiscard]] size_t numSprings() const { return m_numSprings; }
+    [[nodiscard]] size_t numSprings() const { return m_nodes.numItems(); }
 
 private:
     friend void addSpringForces(std::span<const PackedSpring>, SpringGather&, const double*, const double*,
                                 double*, SpringLanes);
-    size_t m_numSprings = 0;
-    std::vector<int> m_nodes;    ///< nodes with at least one spring, ascending
-    std::vector<int> m_first;    ///< per node of m_nodes, its first entry; one past the last at the back
-    std::vector<int> m_spring;   ///< per entry: the spring, in the springs' order within a node
-    std::vector<double> m_sign;  ///< per entry: +1 for the spring's first end, -1 for its second
+    NodeGather m_nodes;
     // Pass 1's results, per spring: squared length (m^2) and force on the first end (N).
     std::vector<double> m_l2, m_fx, m_fy, m_fz;
 };

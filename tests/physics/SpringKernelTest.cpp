@@ -9,6 +9,7 @@
 
 #include "simcore/physics/SpringKernel.h"
 #include "simcore/physics/SpringSet.h"
+#include "tests/physics/SameBits.h"
 
 #include <gtest/gtest.h>
 
@@ -55,14 +56,7 @@ Forces transcription(const SpringSet& springs, const std::vector<std::uint8_t>& 
 void expectSameBits(const Forces& expected, const Forces& actual)
 {
     ASSERT_EQ(expected.cols(), actual.cols());
-    int differing = 0;
-    for (Eigen::Index k = 0; k < expected.size(); ++k) {
-        differing +=
-            std::bit_cast<std::uint64_t>(expected.data()[k]) != std::bit_cast<std::uint64_t>(actual.data()[k])
-                ? 1
-                : 0;
-    }
-    EXPECT_EQ(differing, 0) << "of " << expected.size() << " force components";
+    EXPECT_EQ(testing::differingBits(expected, actual), 0) << "of " << expected.size() << " force components";
 }
 
 class SpringKernel : public ::testing::Test {
