@@ -40,22 +40,25 @@ void NodeGather::build(std::span<const int> nodes, std::span<const double> signs
     }
 }
 
-void NodeGather::sumInto(double* f, const double* fx, const double* fy, const double* fz, const double* gate,
-                         double below) const
+namespace {
+
+/// NodeGather::sumInto(), with the gate looked at only when `Gated`.
+template <bool Gated>
+void sumNodes(const std::vector<int>& nodes, const std::vector<int>& first, const int* item,
+              const double* sign, double* f, const double* fx, const double* fy, const double* fz,
+              const double* gate, double below)
 {
     // sign * force is exact (a negation or none), and a + (-b) is a - b in
     // IEEE arithmetic: each addition is the one the items' order makes.
-    const int* item = m_item.data();
-    const double* sign = m_sign.data();
-    for (size_t k = 0; k < m_nodes.size(); ++k) {
-        double* fn = f + 3 * static_cast<size_t>(m_nodes[k]);
+    for (size_t k = 0; k < nodes.size(); ++k) {
+        double* fn = f + 3 * static_cast<size_t>(nodes[k]);
         double sx = fn[0];
         double sy = fn[1];
         double sz = fn[2];
-        const int last = m_first[k + 1];
-        for (int a = m_first[k]; a < last; ++a) {
+        const int last = first[k + 1];
+        for (int a = first[k]; a < last; ++a) {
             const auto s = static_cast<size_t>(item[a]);
-            if (gate != nullptr && gate[s] < below) {
+            if (Gated && gate[s] < below) {
                 continue;
             }
             sx += sign[a] * fx[s];
@@ -65,6 +68,18 @@ void NodeGather::sumInto(double* f, const double* fx, const double* fy, const do
         fn[0] = sx;
         fn[1] = sy;
         fn[2] = sz;
+    }
+}
+
+}  // namespace
+
+void NodeGather::sumInto(double* f, const double* fx, const double* fy, const double* fz, const double* gate,
+                         double below) const
+{
+    if (gate != nullptr) {
+        sumNodes<true>(m_nodes, m_first, m_item.data(), m_sign.data(), f, fx, fy, fz, gate, below);
+    } else {
+        sumNodes<false>(m_nodes, m_first, m_item.data(), m_sign.data(), f, fx, fy, fz, gate, below);
     }
 }
 

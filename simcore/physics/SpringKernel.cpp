@@ -49,11 +49,13 @@ __attribute__((target("avx2"))) inline lanes::Rows ends(const double* q, const P
                     : lanes::nodes(q, p[0].j, p[1].j, p[2].j, p[3].j);
 }
 
-/// springForce() of four springs at once; returns how many springs it did (a multiple of 4).
+/// springForce() of four springs at once; returns how many springs it did (a
+/// multiple of 4) and counts in `shortSprings` those without length.
 __attribute__((target("avx2"))) size_t byFour(std::span<const PackedSpring> springs, const double* x,
                                               const double* v, double* l2Out, double* fxOut, double* fyOut,
-                                              double* fzOut)
+                                              double* fzOut, int& shortSprings)
 {
+    const __m256d minimum = _mm256_set1_pd(kMinSpringLength * kMinSpringLength);
     size_t e = 0;
     for (; e + 4 <= springs.size(); e += 4) {
         const PackedSpring* p = springs.data() + e;
@@ -84,6 +86,7 @@ __attribute__((target("avx2"))) size_t byFour(std::span<const PackedSpring> spri
         const __m256d tension = _mm256_add_pd(_mm256_mul_pd(rka.r1, stretch), _mm256_mul_pd(rka.r2, speed));
         const __m256d s = _mm256_mul_pd(tension, invL);
         _mm256_storeu_pd(l2Out + e, l2);
+        shortSprings += _mm256_movemask_pd(_mm256_cmp_pd(l2, minimum, _CMP_LT_OQ)) != 0 ? 1 : 0;
         _mm256_storeu_pd(fxOut + e, _mm256_add_pd(_mm256_mul_pd(s, dx), _mm256_mul_pd(across, rx)));
         _mm256_storeu_pd(fyOut + e, _mm256_add_pd(_mm256_mul_pd(s, dy), _mm256_mul_pd(across, ry)));
         _mm256_storeu_pd(fzOut + e, _mm256_add_pd(_mm256_mul_pd(s, dz), _mm256_mul_pd(across, rz)));
@@ -119,19 +122,23 @@ void addSpringForces(std::span<const PackedSpring> springs, SpringGather& gather
     double* fx = gather.m_fx.data();
     double* fy = gather.m_fy.data();
     double* fz = gather.m_fz.data();
+    int shortSprings = 0;  // springs without length (nonzero when there is any)
     size_t e = 0;
 #if defined(__x86_64__)
     static const bool avx2 = __builtin_cpu_supports("avx2") != 0;
     if (lanes == SpringLanes::Widest && avx2) {
-        e = byFour(springs, x, v, l2, fx, fy, fz);
+        e = byFour(springs, x, v, l2, fx, fy, fz, shortSprings);
     }
 #else
     (void)lanes;
 #endif
     for (; e < springs.size(); ++e) {
         springForce(springs[e], x, v, e, l2, fx, fy, fz);
+        shortSprings += l2[e] < kMinSpringLength * kMinSpringLength ? 1 : 0;
     }
-    gather.m_nodes.sumInto(f, fx, fy, fz, l2, kMinSpringLength * kMinSpringLength);
+    // Only where a spring has no length need the sums look at the lengths.
+    gather.m_nodes.sumInto(f, fx, fy, fz, shortSprings > 0 ? l2 : nullptr,
+                           kMinSpringLength * kMinSpringLength);
 }
 
 }  // namespace colonosim::physics
