@@ -44,7 +44,8 @@ private:
     std::vector<int> m_active;
     double m_pressure;
     NodeGather m_gather;  ///< the active triangles' nodes
-    /// The first pass's nodal force per active triangle, N (scratch).
+    /// The first pass's nodal force per active triangle, N (scratch: one
+    /// object's forces are not evaluated from two threads at once).
     mutable std::vector<double> m_fx, m_fy, m_fz;
 };
 

@@ -91,8 +91,10 @@ private:
     /// the springs, their stiffness, the transverse damping or the active set.
     std::vector<PackedSpring> m_packed;
     std::vector<int> m_packedSlot;  ///< per spring: its index in m_packed, -1 when inactive
-    /// Each node's packed springs (SpringKernel.h), rebuilt on the next force
-    /// evaluation after m_packed gains, loses or reorders springs.
+    /// Each node's packed springs and the kernel's scratch (SpringKernel.h),
+    /// rebuilt on the next force evaluation after m_packed gains, loses or
+    /// reorders springs. So one SpringSet's forces are not evaluated from two
+    /// threads at once (each procedure loop owns its colon).
     mutable SpringGather m_gather;
     mutable bool m_gatherStale = true;
     void repack();
