@@ -50,7 +50,8 @@ __attribute__((target("avx2"))) inline lanes::Rows ends(const double* q, const P
 }
 
 /// springForce() of four springs at once; returns how many springs it did (a
-/// multiple of 4) and counts in `shortSprings` those without length.
+/// multiple of 4). `shortSprings` grows by one for each four with a spring
+/// without length (nonzero when there is any).
 __attribute__((target("avx2"))) size_t byFour(std::span<const PackedSpring> springs, const double* x,
                                               const double* v, double* l2Out, double* fxOut, double* fyOut,
                                               double* fzOut, int& shortSprings)
