@@ -59,8 +59,7 @@ void InsufflationPressure::addForce(const Positions& x, Forces& f) const
     const double scale = m_pressure / 6.0;  // p/3 times the 1/2 of the area vector
     size_t e = 0;
 #if defined(__x86_64__)
-    static const bool avx2 = __builtin_cpu_supports("avx2") != 0;
-    if (avx2) {
+    if (lanes::available()) {
         e = pressureByFour(m_triangles, m_active, x.data(), scale, m_fx.data(), m_fy.data(), m_fz.data());
     }
 #endif
@@ -122,14 +121,13 @@ void InsufflationPressure::onActiveSetChanged(const std::vector<std::uint8_t>& a
             m_active.push_back(static_cast<int>(t));
         }
     }
-    std::vector<int> corners;
-    corners.reserve(3 * m_active.size());
+    m_corners.clear();
     for (const int t : m_active) {
         const auto& tri = m_triangles[static_cast<size_t>(t)];
-        corners.insert(corners.end(), tri.begin(), tri.end());
+        m_corners.insert(m_corners.end(), tri.begin(), tri.end());
     }
     constexpr double kSigns[] = {1.0, 1.0, 1.0};  // each corner takes the same force
-    m_gather.build(corners, kSigns);
+    m_gather.build(m_corners, kSigns);
     m_fx.resize(m_active.size());
     m_fy.resize(m_active.size());
     m_fz.resize(m_active.size());

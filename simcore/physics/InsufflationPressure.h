@@ -43,7 +43,8 @@ private:
     std::vector<std::array<int, 3>> m_triangles;
     std::vector<int> m_active;
     double m_pressure;
-    NodeGather m_gather;  ///< the active triangles' nodes
+    NodeGather m_gather;         ///< the active triangles' nodes
+    std::vector<int> m_corners;  ///< their corners as m_gather is built from (kept for its storage)
     /// The first pass's nodal force per active triangle, N (scratch: one
     /// object's forces are not evaluated from two threads at once).
     mutable std::vector<double> m_fx, m_fy, m_fz;

@@ -14,13 +14,15 @@ void NodeGather::build(std::span<const int> nodes, std::span<const double> signs
     }
     // Count each node's entries, then place them item by item: within a
     // node the entries follow the items' order.
-    std::vector<int> entries(static_cast<size_t>(count), 0);
+    std::vector<int>& entries = m_count;
+    entries.assign(static_cast<size_t>(count), 0);
     for (const int n : nodes) {
         ++entries[static_cast<size_t>(n)];
     }
     m_nodes.clear();
     m_first.clear();
-    std::vector<int> slot(static_cast<size_t>(count), 0);
+    std::vector<int>& slot = m_slot;
+    slot.assign(static_cast<size_t>(count), 0);
     int total = 0;
     for (int n = 0; n < count; ++n) {
         if (entries[static_cast<size_t>(n)] > 0) {

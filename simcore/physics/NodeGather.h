@@ -32,6 +32,9 @@ private:
     std::vector<int> m_first;    ///< per node of m_nodes, its first entry; one past the last at the back
     std::vector<int> m_item;     ///< per entry: the item, in the items' order within a node
     std::vector<double> m_sign;  ///< per entry: the sign of the item's force on the node
+    // build()'s per-node counts and next free entries, kept so that a rebuild
+    // (the active set changes within the loop) reuses their storage.
+    std::vector<int> m_count, m_slot;
 };
 
 }  // namespace colonosim::physics

@@ -13,6 +13,13 @@
 
 namespace colonosim::physics::lanes {
 
+/// Whether this processor has AVX2, asked once (the build stays plain x86-64).
+inline bool available()
+{
+    static const bool avx2 = __builtin_cpu_supports("avx2") != 0;
+    return avx2;
+}
+
 /// Rows 0-2 of the 4 x 4 matrix whose columns are a0..a3: each row one
 /// component of the four columns, lane 0 from a0.
 struct Rows {

@@ -101,14 +101,13 @@ __attribute__((target("avx2"))) size_t byFour(std::span<const PackedSpring> spri
 
 void SpringGather::build(std::span<const PackedSpring> springs)
 {
-    std::vector<int> ends;
-    ends.reserve(2 * springs.size());
+    m_ends.clear();
     for (const PackedSpring& p : springs) {
-        ends.push_back(p.i);
-        ends.push_back(p.j);
+        m_ends.push_back(p.i);
+        m_ends.push_back(p.j);
     }
     constexpr double kSigns[] = {1.0, -1.0};  // the first end takes the force, the second its negative
-    m_nodes.build(ends, kSigns);
+    m_nodes.build(m_ends, kSigns);
     m_l2.resize(springs.size());
     m_fx.resize(springs.size());
     m_fy.resize(springs.size());
@@ -116,7 +115,7 @@ void SpringGather::build(std::span<const PackedSpring> springs)
 }
 
 void addSpringForces(std::span<const PackedSpring> springs, SpringGather& gather, const double* x,
-                     const double* v, double* f, SpringLanes lanes)
+                     const double* v, double* f, SpringLanes width)
 {
     assert(gather.numSprings() == springs.size());
     double* l2 = gather.m_l2.data();
@@ -126,12 +125,11 @@ void addSpringForces(std::span<const PackedSpring> springs, SpringGather& gather
     int shortSprings = 0;  // springs without length (nonzero when there is any)
     size_t e = 0;
 #if defined(__x86_64__)
-    static const bool avx2 = __builtin_cpu_supports("avx2") != 0;
-    if (lanes == SpringLanes::Widest && avx2) {
+    if (width == SpringLanes::Widest && lanes::available()) {
         e = byFour(springs, x, v, l2, fx, fy, fz, shortSprings);
     }
 #else
-    (void)lanes;
+    (void)width;
 #endif
     for (; e < springs.size(); ++e) {
         springForce(springs[e], x, v, e, l2, fx, fy, fz);

@@ -52,6 +52,7 @@ private:
     friend void addSpringForces(std::span<const PackedSpring>, SpringGather&, const double*, const double*,
                                 double*, SpringLanes);
     NodeGather m_nodes;
+    std::vector<int> m_ends;  ///< build()'s springs' ends, kept for its storage
     // Pass 1's results, per spring: squared length (m^2) and force on the first end (N).
     std::vector<double> m_l2, m_fx, m_fy, m_fz;
 };
