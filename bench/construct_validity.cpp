@@ -11,8 +11,14 @@
 //   construct_validity [--seconds S] [--seeds 1,2,3,...] [--element-points 0|1]
 //                      [--side-normals 0|1] [--pleat-search 0|1] [--sticking-friction 0|1]
 //                      [--spin-friction 0|1] [--haustral-axial-ratio R] [--max-node-step M]
+//                      [--require EXPR] [--until-cecum 0|1] [--who both|expert|novice]
 //
-// Seed 0 is the default colon; any other seed is a generated patient. The
+// Seed 0 is the default colon; any other seed is a generated patient, drawn
+// under --require (the case generator's expression, e.g. "redundant_sigmoid":
+// the literature separates novices from experts on hard cases only). With
+// --until-cecum 1 a run ends when the cecum is reached (the three measures
+// are then those of the insertion). --who runs one operator only (no
+// comparison is then printed). The
 // five contact options (contact.elementPoints, contact.sideNormals,
 // contact.pleatSearch, contact.stickingFriction, contact.spinFriction;
 // each flag's default is the parameter's: off) and the
@@ -64,12 +70,20 @@ struct ModelOptions {
     double spinFriction = contact::ContactParameters{}.spinFriction;
     double haustralAxialRatio = physics::TissueParameters{}.haustralAxialRatio;
     double maxNodeStep = scope::ScopeParameters{}.maxNodeStep;  ///< m
+    cases::Constraints constraints;                             ///< what a generated patient must have
+    bool untilCecum = false;                                    ///< end a run at the cecum
+};
+
+/// Which operators run on each patient.
+struct Who {
+    bool expert = true;
+    bool novice = true;
 };
 
 Run runOperator(std::uint64_t seed, const procedure::OperatorStyle& style, double seconds,
                 const ModelOptions& options)
 {
-    const bench::Patient patient = bench::patientFromSeed(seed);
+    const bench::Patient patient = bench::patientFromSeed(seed, options.constraints);
     procedure::ProcedureSettings settings = patient.settings;
     settings.contact.elementPoints = options.elementPoints;
     settings.contact.sideNormals = options.sideNormals;
@@ -84,7 +98,7 @@ Run runOperator(std::uint64_t seed, const procedure::OperatorStyle& style, doubl
     Run run;
     run.colonLength = anatomy.centreline.length();
     const auto steps = static_cast<long>(seconds / settings.stepping.loopStep);
-    for (long s = 0; s < steps && !driver.finished(); ++s) {
+    for (long s = 0; s < steps && !driver.finished() && !(options.untilCecum && loop.cecumReached()); ++s) {
         loop.step(driver.next(loop));
         run.outside += loop.lumen().contacts().back().depth > settings.scope.outerDiameter ? 1 : 0;
         run.guarded += loop.scope().guardRetries() > 0 ? 1 : 0;
@@ -123,6 +137,7 @@ int main(int argc, char** argv)
     double seconds = 60.0;
     std::vector<std::uint64_t> seeds{1, 2, 3, 4, 5, 6, 7, 8, 9, 10};
     ModelOptions options;
+    Who who;
     try {
         bench::forEachOption(argc, argv, [&](const std::string& flag, const std::string& value) {
             if (flag == "--seconds") {
@@ -152,11 +167,23 @@ int main(int argc, char** argv)
             } else if (flag == "--max-node-step") {
                 const auto& spec = scope::ScopeParameters::maxNodeStepSpec;
                 options.maxNodeStep = bench::parseList(flag, value, spec.minValue, spec.maxValue).front();
+            } else if (flag == "--require") {
+                options.constraints.require = cases::RequireExpression::parse(value);
+            } else if (flag == "--who") {
+                if (value != "both" && value != "expert" && value != "novice") {
+                    throw std::invalid_argument("--who: value '" + value +
+                                                "' is not one of both, expert, novice");
+                }
+                who.expert = value != "novice";
+                who.novice = value != "expert";
+            } else if (flag == "--until-cecum") {
+                options.untilCecum = bench::parseList(flag, value, 0.0, 1.0).front() != 0.0;
             } else {
                 throw std::invalid_argument("unknown option '" + flag +
                                             "' (allowed: --seconds, --seeds, --element-points, "
                                             "--side-normals, --pleat-search, --sticking-friction, "
-                                            "--spin-friction, --haustral-axial-ratio, --max-node-step)");
+                                            "--spin-friction, --haustral-axial-ratio, --max-node-step, "
+                                            "--require, --until-cecum, --who)");
             }
         });
     } catch (const std::exception& error) {
@@ -169,25 +196,39 @@ int main(int argc, char** argv)
         "into the wall; guarded: steps with a chain solve refused by the scope's step guard; "
         "contact options: elementPoints %g, sideNormals %g, pleatSearch %g, stickingFriction %g, "
         "spinFriction %g; "
-        "tissue.haustralAxialRatio %g; scope.maxNodeStep %g m\n",
+        "tissue.haustralAxialRatio %g; scope.maxNodeStep %g m; patients: %s; %s\n",
         seconds, options.elementPoints, options.sideNormals, options.pleatSearch, options.stickingFriction,
-        options.spinFriction, options.haustralAxialRatio, options.maxNodeStep);
+        options.spinFriction, options.haustralAxialRatio, options.maxNodeStep,
+        options.constraints.empty() ? "any" : options.constraints.text().c_str(),
+        options.untilCecum ? "runs end at the cecum" : "runs go on past the cecum");
     std::printf("%-7s %-6s %10s %17s %9s %6s %6s %10s %9s %9s\n", "who", "seed", "cecum_s", "furthest_m",
                 "looped_s", "loops", "alpha", "peak_F_N", "outside", "guarded");
     int fasterToCecum = 0;
     int lessLooped = 0;
     int lessForce = 0;
     for (const std::uint64_t seed : seeds) {
-        const Run expert = runOperator(seed, procedure::expertStyle(), seconds, options);
-        printRun("expert", seed, expert);
-        const Run novice = runOperator(seed, procedure::noviceStyle(), seconds, options);
-        printRun("novice", seed, novice);
+        Run expert;
+        Run novice;
+        if (who.expert) {
+            expert = runOperator(seed, procedure::expertStyle(), seconds, options);
+            printRun("expert", seed, expert);
+        }
+        if (who.novice) {
+            novice = runOperator(seed, procedure::noviceStyle(), seconds, options);
+            printRun("novice", seed, novice);
+        }
+        if (!who.expert || !who.novice) {
+            continue;
+        }
         // Faster to the cecum: the expert reached it, and the novice did not or later.
         const bool expertFaster = expert.timeToCecum >= 0.0 &&
                                   (novice.timeToCecum < 0.0 || expert.timeToCecum < novice.timeToCecum);
         fasterToCecum += expertFaster ? 1 : 0;
         lessLooped += expert.loopedTime < novice.loopedTime ? 1 : 0;
         lessForce += expert.peakForce < novice.peakForce ? 1 : 0;
+    }
+    if (!who.expert || !who.novice) {
+        return 0;
     }
     const auto n = static_cast<int>(seeds.size());
     std::printf(

@@ -92,7 +92,7 @@ TEST(HaustralWall, AStraightPushIntoARedundantSigmoidFormsAnNLoopOnlyWhenTheWall
 // the colon (issue 3): generated seed 1 (a 1.113 m colon), the novice's push
 // for 23 s on the haustrated wall (ratio 0.07). Its tip stops at the hepatic
 // flexure about 17 s in while the shaft goes on in and bows the transverse
-// colon. Unguarded (scope.maxNodeStep 1 m, the default) the chain's solve
+// colon. Unguarded (scope.maxNodeStep 1 m) the chain's solve
 // under the contact loads there swings the tip 5-60 mm a step from 20.7 s on,
 // and at 20.859 s one solve throws it 319 mm: the shaft leaves the colon
 // while no wall node moves more than 14 mm (a per-step probe; README, known

@@ -281,6 +281,27 @@ TEST(Colonoscope, AStepWithinTheGuardsLimitKeepsItsBits)
     EXPECT_EQ(guarded.tip, free.tip);
 }
 
+TEST(Colonoscope, TheDefaultGuardRefusesOnlyASolveThatDiverges)
+{
+    // The default limit, 0.2 m in a 1 ms step (200 m/s), lets the 10 N throw
+    // (187 mm) through bit for bit and refuses a 200 N throw (0.83 m unguarded).
+    const double limit = ScopeParameters{}.maxNodeStep;
+    const double unguarded = ScopeParameters::maxNodeStepSpec.maxValue;
+    const GuardedStep thrown = oneStep(kThrowingLoad, limit);
+    const GuardedStep thrownFree = oneStep(kThrowingLoad, unguarded);
+    EXPECT_EQ(thrown.retries, 0);
+    EXPECT_EQ(thrown.tip, thrownFree.tip);
+    EXPECT_LT(thrownFree.tipMotion, limit);
+    constexpr double kDivergingLoad = 200.0;  // N on the tip
+    const GuardedStep divergedFree = oneStep(kDivergingLoad, unguarded);
+    const GuardedStep held = oneStep(kDivergingLoad, limit);
+    EXPECT_GT(divergedFree.tipMotion, limit);
+    EXPECT_GT(held.retries, 0);
+    EXPECT_LE(held.tipMotion, limit);
+    RecordProperty("unguarded_throw_mm", std::to_string(divergedFree.tipMotion * 1e3));
+    RecordProperty("held_mm", std::to_string(held.tipMotion * 1e3));
+}
+
 TEST(Colonoscope, AQuasiStaticStepIsNotGuarded)
 {
     // No damping to raise: the rod goes straight to its equilibrium.
