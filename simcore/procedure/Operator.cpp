@@ -63,6 +63,17 @@ constexpr double kReduceAtMost = 0.15;
 /// insertion advance over tip advance above which the tip no longer follows
 /// the shaft (the clinical warning sign of a loop: not 1:1).
 constexpr double kTipLags = 2.0;
+/// loop reductions begun at one place (within kNewBend of each other along
+/// the colon) before the expert stops reducing the loop there and pushes on
+/// through it: a redundant sigmoid reloops as soon as the scope advances, and
+/// the technique then is to let the loop form, reach the colon beyond it and
+/// reduce it from there with the tip hooked (clinical-assessment.md,
+/// "Reduction"; the alpha manoeuvre).
+constexpr int kReductionsPerPlace = 2;
+/// m the tip goes on along the colon through a loop it has let be before
+/// the expert reduces loops again (past the sigmoid's far limb, into the
+/// colon beyond it, where the tip can be hooked).
+constexpr double kPassLoopLength = 0.15;
 
 }  // namespace
 
@@ -91,6 +102,29 @@ OperatorStyle expertStyle()
 OperatorStyle noviceStyle()
 {
     return {0.06, 0.04, 25.0, 25.0, false, 0.5, 3.0};
+}
+
+bool LoopReductionCount::reduceAt(double tipArc)
+{
+    if (m_reducedAt >= 0.0 && std::abs(tipArc - m_reducedAt) < m_samePlace) {
+        ++m_here;
+    } else {
+        m_reducedAt = tipArc;
+        m_here = 1;
+    }
+    if (m_here <= m_perPlace) {
+        return true;
+    }
+    m_passUntil = tipArc + m_passLength;
+    m_here = 0;
+    m_reducedAt = -1.0;
+    return false;
+}
+
+ScriptedOperator::ScriptedOperator(const OperatorStyle& style)
+    : m_style(style), m_reductions(kReductionsPerPlace, kNewBend, kPassLoopLength)
+{
+    m_inViewSince.fill(-1.0);
 }
 
 InputSample ScriptedOperator::next(const ProcedureLoop& loop)
@@ -185,7 +219,8 @@ InputSample ScriptedOperator::next(const ProcedureLoop& loop)
     // on and reduces the loop from further in, where the tip holds.
     const bool looped =
         loop.loops().current() != LoopKind::None && loop.loops().signals().tipAdvanceRatio > kTipLags;
-    const bool backOff = force > forceLimit || (m_style.reducesLoops && looped);
+    const bool reduce = m_style.reducesLoops && looped && !m_reductions.passing(frame.tipArcLength);
+    const bool backOff = force > forceLimit || reduce;
     bool still = false;
     if (!m_style.aimsBeforeInserting || (m_phase != Phase::Insert && m_phase != Phase::SlideBy)) {
         m_stillSince = -1.0;
@@ -209,6 +244,9 @@ InputSample ScriptedOperator::next(const ProcedureLoop& loop)
             m_blockedAt = m_input.insertion;
         }
         if (backOff) {
+            if (reduce && force <= forceLimit && !m_reductions.reduceAt(frame.tipArcLength)) {
+                break;  // a loop that came back here: let it be and push on through it
+            }
             backOffBy(Phase::ReduceLoop, kReduceLength);
         } else if (loop.cecumReached() || m_input.insertion >= maxInsertion) {
             m_phase = Phase::Withdraw;

@@ -16,7 +16,11 @@
 ///     loop reduction; counter-clockwise while the loop is read as a reverse
 ///     alpha, which clockwise torque tightens) 3 cm and on until the loop is
 ///     out, 15 cm at most,
-///     before going on; aims a lumen that lies behind the folded tip by more
+///     before going on; when a loop comes back at the same place after two
+///     reductions (a redundant colon that reloops whatever is done), lets
+///     it form and pushes on through it, the tip aimed, until the tip is
+///     15 cm further along the colon, and reduces it from there, the tip
+///     hooked beyond the loop; aims a lumen that lies behind the folded tip by more
 ///     bend towards it; when a dial is at its stop and the scope no longer
 ///     gets on, pulls back 4 cm and re-approaches, and if that fails at the
 ///     same bend slides by it (1 cm/s under 3 N, tip deflected towards the
@@ -82,9 +86,34 @@ inline constexpr double kAimedWithin = 0.35;
 [[nodiscard]] OperatorStyle expertStyle();
 [[nodiscard]] OperatorStyle noviceStyle();
 
+/// The expert's count of loop reductions at one place along the colon:
+/// after `perPlace` reductions begun within `samePlace` of each other, the
+/// loop read there next is let be, and the scope pushed on through it, until
+/// the tip is `passLength` further along the colon (Operator.cpp,
+/// kReductionsPerPlace). Distances in m along the colon at rest.
+class LoopReductionCount {
+public:
+    LoopReductionCount(int perPlace, double samePlace, double passLength)
+        : m_perPlace(perPlace), m_samePlace(samePlace), m_passLength(passLength)
+    {}
+    /// True while the tip, at `tipArc`, is passing through a loop it lets be.
+    [[nodiscard]] bool passing(double tipArc) const { return tipArc < m_passUntil; }
+    /// A loop asks to be reduced with the tip at `tipArc`: true to reduce it;
+    /// false to let it be (passing() then holds until the tip is passLength on).
+    bool reduceAt(double tipArc);
+
+private:
+    int m_perPlace;
+    double m_samePlace;
+    double m_passLength;
+    double m_reducedAt = -1.0;  ///< where the tip was when the first reduction here began, m; < 0: none
+    int m_here = 0;             ///< reductions begun there
+    double m_passUntil = -1.0;  ///< m along the colon
+};
+
 class ScriptedOperator final : public Operator {
 public:
-    explicit ScriptedOperator(const OperatorStyle& style) : m_style(style) { m_inViewSince.fill(-1.0); }
+    explicit ScriptedOperator(const OperatorStyle& style);
     InputSample next(const ProcedureLoop& loop) override;
     [[nodiscard]] bool finished() const override { return m_finished; }
 
@@ -111,8 +140,9 @@ private:
     double m_stillSince = -1.0;     ///< s: since when the scope has not been fed kBlockedFeed; < 0: not
     double m_stillAt = 0.0;         ///< insertion then, m
     int m_pullBacks = 0;            ///< pull-backs tried at the present bend
-    double m_bendArc = -1.0;        ///< where along the colon the tip was blocked, m
-    double m_slideUntil = 0.0;      ///< insertion at which a slide-by gives up, m
+    LoopReductionCount m_reductions;  ///< loop reductions at one place, and the loop let be
+    double m_bendArc = -1.0;          ///< where along the colon the tip was blocked, m
+    double m_slideUntil = 0.0;        ///< insertion at which a slide-by gives up, m
     bool m_finished = false;
     std::array<double, 32> m_inViewSince{};  ///< s, per lesion; negative while out of view
     std::uint32_t m_marked = 0;              ///< lesions already marked
