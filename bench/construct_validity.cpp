@@ -177,7 +177,10 @@ int main(int argc, char** argv)
                 who.expert = value != "novice";
                 who.novice = value != "expert";
             } else if (flag == "--until-cecum") {
-                options.untilCecum = bench::parseList(flag, value, 0.0, 1.0).front() != 0.0;
+                if (value != "0" && value != "1") {
+                    throw std::invalid_argument("--until-cecum: value '" + value + "' is not 0 or 1");
+                }
+                options.untilCecum = value == "1";
             } else {
                 throw std::invalid_argument("unknown option '" + flag +
                                             "' (allowed: --seconds, --seeds, --element-points, "
@@ -203,6 +206,7 @@ int main(int argc, char** argv)
         options.untilCecum ? "runs end at the cecum" : "runs go on past the cecum");
     std::printf("%-7s %-6s %10s %17s %9s %6s %6s %10s %9s %9s\n", "who", "seed", "cecum_s", "furthest_m",
                 "looped_s", "loops", "alpha", "peak_F_N", "outside", "guarded");
+    const bool compare = who.expert && who.novice;
     int fasterToCecum = 0;
     int lessLooped = 0;
     int lessForce = 0;
@@ -217,7 +221,7 @@ int main(int argc, char** argv)
             novice = runOperator(seed, procedure::noviceStyle(), seconds, options);
             printRun("novice", seed, novice);
         }
-        if (!who.expert || !who.novice) {
+        if (!compare) {
             continue;
         }
         // Faster to the cecum: the expert reached it, and the novice did not or later.
@@ -227,7 +231,7 @@ int main(int argc, char** argv)
         lessLooped += expert.loopedTime < novice.loopedTime ? 1 : 0;
         lessForce += expert.peakForce < novice.peakForce ? 1 : 0;
     }
-    if (!who.expert || !who.novice) {
+    if (!compare) {
         return 0;
     }
     const auto n = static_cast<int>(seeds.size());
