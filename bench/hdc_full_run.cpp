@@ -3,8 +3,9 @@
 // asserted: the scripted expert watches the procedure and moves the virtual
 // hand of the simulated device; the HDC (its own thread, real time, 1 kHz)
 // sends the device's input over OpenIGTLink on loopback; the simulator's HDC
-// operator hands it to the procedure loop, which steps no faster than the
-// wall clock and sends the handle load back for the HDC's servo to render.
+// operator hands it to the procedure loop, which steps on each device frame
+// as it arrives (never ahead of the device's clock) and sends the handle
+// load back for the HDC's servo to render.
 // The expert closes its loop through the device (its grip and carriage), not
 // through the loop's input directly.
 //
@@ -124,8 +125,7 @@ int main(int argc, char** argv)
     long steps = 0;
     const auto start = std::chrono::steady_clock::now();
     for (; steps < maxSteps && !expert.finished(); ++steps) {
-        // The simulator never runs ahead of the wall clock (as in the trainer).
-        std::this_thread::sleep_until(start + std::chrono::duration<double>(static_cast<double>(steps) * dt));
+        // The HDC operator keeps time: the loop steps on each device frame.
         const procedure::InputSample wanted = expert.next(loop);
         hand.publish(wanted);
         hdcInput.recordConnection(loop);

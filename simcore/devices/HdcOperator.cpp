@@ -1,6 +1,19 @@
 #include "simcore/devices/HdcOperator.h"
 
+#include <thread>
+
 namespace colonosim::devices {
+
+void HdcOperator::waitForWallClock(double loopStep)
+{
+    const Clock::time_point now = Clock::now();
+    if (m_nextStep < now) {
+        m_nextStep = now;  // overran, or the first step: a fresh schedule
+    } else {
+        std::this_thread::sleep_until(m_nextStep);
+    }
+    m_nextStep += std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(loopStep));
+}
 
 void HdcOperator::recordConnection(procedure::ProcedureLoop& loop)
 {
@@ -41,7 +54,19 @@ procedure::InputSample HdcOperator::next(const procedure::ProcedureLoop& loop)
                              m_inputTime);
     }
     m_sentOnce = true;
-    if (std::optional<StampedInput> in = m_server.latestInput()) {
+    const double loopStep = loop.trace().loopStep;
+    std::optional<StampedInput> in;
+    if (m_server.connected()) {
+        // Steps on the device's frame the moment it arrives; a silent device
+        // (kFrameWait without a frame) leaves the last input held.
+        in = m_server.waitForInput(kFrameWait);
+        m_nextStep = Clock::now() +
+                     std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(loopStep));
+    } else {
+        waitForWallClock(loopStep);
+        in = m_server.latestInput();
+    }
+    if (in) {
         m_input = in->input;
         m_inputTime = in->time;
         m_device = in->device;

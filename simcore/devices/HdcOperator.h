@@ -8,9 +8,19 @@
 /// its first frame, which carries the name, arrives). A link replaced by a
 /// new one between two loop steps is still recorded as a disconnection and
 /// a connection: the server counts its connections.
+///
+/// The device keeps the session's time: while an HDC is connected, next()
+/// waits for the device's next frame and the loop steps on it as soon as it
+/// arrives (one step per frame, so the loop answers a pose within its own
+/// step time and never runs ahead of the person's hand); while none is, or
+/// when the device falls silent for kFrameWait, the loop steps on the wall
+/// clock, holding the last input. A loop slower than the device takes the
+/// newest frame (frames in between are the device's, not the session's).
 
 #include "simcore/devices/HdcServer.h"
 #include "simcore/procedure/Operator.h"
+
+#include <chrono>
 
 namespace colonosim::devices {
 
@@ -24,12 +34,23 @@ public:
     void recordConnection(procedure::ProcedureLoop& loop);
     procedure::InputSample next(const procedure::ProcedureLoop& loop) override;
     [[nodiscard]] bool finished() const override { return false; }
+    [[nodiscard]] bool keepsTime() const override { return true; }
 
     [[nodiscard]] const HdcServer& server() const { return m_server; }
     [[nodiscard]] long framesUsed() const { return m_frames; }
 
+    /// s a connected loop waits for the device's next frame before it steps
+    /// on the last input (two periods of a 1 kHz device).
+    static constexpr double kFrameWait = 0.002;
+
 private:
+    using Clock = std::chrono::steady_clock;
+    /// Waits until the wall clock is due for the next step, one loop step
+    /// after the last (a fresh schedule after an overrun, no catch-up burst).
+    void waitForWallClock(double loopStep);
+
     HdcServer m_server;
+    Clock::time_point m_nextStep{};  ///< when the wall clock is due for a step without the device
     procedure::InputSample m_input;
     double m_inputTime = 0.0;
     bool m_connected = false;

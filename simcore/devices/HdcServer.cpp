@@ -1,5 +1,7 @@
 #include "simcore/devices/HdcServer.h"
 
+#include <algorithm>
+#include <chrono>
 #include <cstdio>
 
 #include <sys/eventfd.h>
@@ -28,11 +30,36 @@ HdcServer::~HdcServer()
 
 std::optional<StampedInput> HdcServer::latestInput()
 {
+    {
+        const std::lock_guard lock(m_arrivalMutex);
+        m_framesTaken = m_framesWritten;
+    }
     StampedInput in;
     if (m_inputs.read(in)) {
         return in;
     }
     return std::nullopt;
+}
+
+std::optional<StampedInput> HdcServer::waitForInput(double timeout)
+{
+    using Clock = std::chrono::steady_clock;
+    const Clock::time_point deadline =
+        Clock::now() +
+        std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(std::max(timeout, 0.0)));
+    for (;;) {
+        bool arrived = false;
+        {
+            std::unique_lock lock(m_arrivalMutex);
+            arrived =
+                m_arrival.wait_until(lock, deadline, [this] { return m_framesWritten != m_framesTaken; });
+        }
+        // A frame counted after the last take may already have been read
+        // with it: then there is nothing fresh, and the wait goes on.
+        if (std::optional<StampedInput> in = latestInput(); in || !arrived) {
+            return in;
+        }
+    }
 }
 
 void HdcServer::publishLoad(const HandleCommand& load, double inputTime)
@@ -101,6 +128,11 @@ void HdcServer::serve(std::stop_token stop)
                 frame.time = m->time;
                 ++frame.frame;
                 m_inputs.write(frame);
+                {
+                    const std::lock_guard lock(m_arrivalMutex);
+                    ++m_framesWritten;
+                }
+                m_arrival.notify_one();
                 break;
             case Message::Kind::Status:
                 m_emergencyStop = m->statusCode == kStatusDisabled;

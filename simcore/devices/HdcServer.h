@@ -4,7 +4,8 @@
 /// std::jthread). It accepts one HDC at a time and refuses any other with a
 /// STATUS "busy" message before closing it; it survives the HDC leaving and
 /// coming back. Input frames reach the procedure loop through a triple
-/// buffer (latestInput(), never waits); handle loads go back the same way
+/// buffer (latestInput(), never waits; waitForInput(), which the loop uses
+/// to step on each frame as it arrives); handle loads go back the same way
 /// (publishLoad()). The procedure thread never touches a socket.
 
 #include "simcore/devices/HapticParameters.h"
@@ -13,6 +14,8 @@
 #include "simcore/devices/TripleBuffer.h"
 
 #include <atomic>
+#include <condition_variable>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <thread>
@@ -43,6 +46,9 @@ public:
     [[nodiscard]] int port() const { return m_listener.port(); }
     /// The newest complete input frame since the last call, if any.
     std::optional<StampedInput> latestInput();
+    /// The newest input frame since the last call of either, waiting up to
+    /// `timeout` seconds for one to arrive; nothing when none came by then.
+    std::optional<StampedInput> waitForInput(double timeout);
     /// Sends the handle load computed from the input frame of time `inputTime`.
     void publishLoad(const HandleCommand& load, double inputTime);
 
@@ -58,6 +64,10 @@ private:
     HapticParameters m_parameters;
     TcpListener m_listener;
     TripleBuffer<StampedInput> m_inputs;
+    std::mutex m_arrivalMutex;
+    std::condition_variable m_arrival;  ///< notified by the I/O thread after each frame it writes
+    long m_framesWritten = 0;           ///< under m_arrivalMutex
+    long m_framesTaken = 0;             ///< procedure thread's: m_framesWritten when it last took a frame
     TripleBuffer<StampedLoad> m_loads;
     long m_loadSequence = 0;
     std::atomic<bool> m_connected{false};

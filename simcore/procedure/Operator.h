@@ -48,6 +48,11 @@ public:
     virtual InputSample next(const ProcedureLoop& loop) = 0;
     /// True when the operator has finished (withdrawn, or the trace ended).
     [[nodiscard]] virtual bool finished() const = 0;
+    /// True when next() itself keeps the session in real time (a device that
+    /// sends its frames at its own rate): a loop driven by it adds no
+    /// wall-clock pacing of its own. Scripted and replayed input has no
+    /// clock: the host paces it, or runs it as fast as it can.
+    [[nodiscard]] virtual bool keepsTime() const { return false; }
 };
 
 struct OperatorStyle {

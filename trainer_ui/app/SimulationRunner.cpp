@@ -120,7 +120,12 @@ void SimulationRunner::run(std::stop_token stop)
             std::this_thread::sleep_for(std::chrono::milliseconds(2));
             continue;
         }
-        if (!seeking) {
+        if (m_driver->keepsTime()) {
+            // The device sets the pace (one step per frame); the anchor
+            // follows, so the wall-clock pacing takes over if it stops.
+            anchorWall = now;
+            anchorSim = loop.time();
+        } else if (!seeking) {
             const double due = anchorSim + speed * secondsBetween(anchorWall, now);
             if (loop.time() + dt > due + 1e-9) {
                 const double wait = (loop.time() + dt - anchorSim) / speed;

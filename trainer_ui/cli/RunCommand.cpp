@@ -24,6 +24,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -31,6 +32,7 @@
 #include <iostream>
 #include <map>
 #include <sstream>
+#include <thread>
 
 namespace colonosim::cli {
 
@@ -171,8 +173,19 @@ int runProcedure(std::span<char* const> args)
         }
         session = records.records->beginSession(actor, caseId, task, device);
     }
-    const auto steps = static_cast<long>(maxTime / loop.trace().loopStep);
+    const double loopStep = loop.trace().loopStep;
+    const auto steps = static_cast<long>(maxTime / loopStep);
+    // A person's gamepad is integrated per step: the loop keeps the wall
+    // clock for it. The HDC keeps time itself (a step per device frame);
+    // scripted and replayed input runs as fast as the loop can.
+    const bool wallClock = *operatorName == "gamepad";
+    const auto start = std::chrono::steady_clock::now();
     for (long s = 0; s < steps && !driver->finished(); ++s) {
+        if (wallClock) {
+            std::this_thread::sleep_until(
+                start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                            std::chrono::duration<double>(static_cast<double>(s) * loopStep)));
+        }
         if (hdc != nullptr) {
             hdc->recordConnection(loop);
         }
