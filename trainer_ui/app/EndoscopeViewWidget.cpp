@@ -8,7 +8,7 @@
 namespace colonosim::app {
 
 EndoscopeViewWidget::EndoscopeViewWidget(std::shared_ptr<const ProcedureScene> scene, QWidget* parent)
-    : QOpenGLWidget(parent), m_scene(std::move(scene))
+    : OffscreenGlWidget(parent), m_scene(std::move(scene))
 {
     setFixedSize(kWidth, kHeight);
     m_clock.start();
@@ -16,9 +16,10 @@ EndoscopeViewWidget::EndoscopeViewWidget(std::shared_ptr<const ProcedureScene> s
 
 EndoscopeViewWidget::~EndoscopeViewWidget()
 {
-    makeCurrent();
-    m_view.reset();
-    doneCurrent();
+    if (makeCurrent()) {  // the view's OpenGL objects belong to the widget's context
+        m_view.reset();
+        doneCurrent();
+    }
 }
 
 void EndoscopeViewWidget::showSnapshot(const Snapshot* snapshot)
@@ -38,7 +39,7 @@ void EndoscopeViewWidget::initializeGL()
     }
 }
 
-void EndoscopeViewWidget::paintGL()
+bool EndoscopeViewWidget::paintGL()
 {
     const int width = static_cast<int>(this->width() * devicePixelRatioF());
     const int height = static_cast<int>(this->height() * devicePixelRatioF());
@@ -48,15 +49,14 @@ void EndoscopeViewWidget::paintGL()
         painter.setPen(QColor(230, 230, 230));
         painter.drawText(rect(), Qt::AlignCenter | Qt::TextWordWrap,
                          m_failure.isEmpty() ? tr("Preparing the colon…") : m_failure);
-        return;
+        return false;
     }
     m_scene->mapping.apply(m_snapshot->wall, m_visual);
     m_view->setWallPositions(m_visual);
     m_view->setBleedingMarks(m_snapshot->bleedingMarks);
     m_view->render({m_snapshot->tip.position, m_snapshot->tip.rotation}, {m_snapshot->lensSoiling, 0.0},
-                   width, height, defaultFramebufferObject());
-    m_lastFrameAt = std::chrono::steady_clock::now();
-    m_lastFrameInsertion = m_snapshot->frame.input.insertion;
+                   width, height, framebufferObject());
+    m_drawnInsertion = m_snapshot->frame.input.insertion;
     if (m_frames == 0) {
         m_clock.restart();  // the rate counts from the first frame drawn
     }
@@ -68,6 +68,13 @@ void EndoscopeViewWidget::paintGL()
         m_windowFrames = 0;
         m_clock.restart();
     }
+    return true;
+}
+
+void EndoscopeViewWidget::frameShown()
+{
+    m_lastFrameAt = std::chrono::steady_clock::now();
+    m_lastFrameInsertion = m_drawnInsertion;
 }
 
 }  // namespace colonosim::app

@@ -1,23 +1,24 @@
 #pragma once
 /// \file
-/// The endoscope view in a window: a QOpenGLWidget (OpenGL 3.3 core) hosting
-/// render::EndoscopeView, drawing the latest snapshot of the loop (the wall
-/// mapped from the physics nodes, seen from the tip pose) into the widget's
-/// framebuffer. Counts the frames it draws (the graphics rate of the HUD).
+/// The endoscope view in a window: an OffscreenGlWidget (OpenGL 3.3 core)
+/// hosting render::EndoscopeView, drawing the latest snapshot of the loop
+/// (the wall mapped from the physics nodes, seen from the tip pose) into the
+/// widget's framebuffer. Counts the frames it draws (the graphics rate of
+/// the HUD).
 
 #include "simcore/render/EndoscopeView.h"
+#include "trainer_ui/app/OffscreenGlWidget.h"
 #include "trainer_ui/app/ProcedureScene.h"
 #include "trainer_ui/app/SimulationRunner.h"
 
 #include <QElapsedTimer>
-#include <QOpenGLWidget>
 
 #include <chrono>
 #include <memory>
 
 namespace colonosim::app {
 
-class EndoscopeViewWidget : public QOpenGLWidget {
+class EndoscopeViewWidget : public OffscreenGlWidget {
     Q_OBJECT
 public:
     /// The view's size in pixels: the video of a standard-definition endoscope (4:3).
@@ -41,7 +42,8 @@ public:
 
 protected:
     void initializeGL() override;
-    void paintGL() override;
+    bool paintGL() override;
+    void frameShown() override;
 
 private:
     std::shared_ptr<const ProcedureScene> m_scene;
@@ -56,6 +58,7 @@ private:
     double m_fps = 0.0;
     std::chrono::steady_clock::time_point m_lastFrameAt;
     double m_lastFrameInsertion = 0.0;
+    double m_drawnInsertion = 0.0;  ///< insertion of the frame being drawn, m
 };
 
 }  // namespace colonosim::app

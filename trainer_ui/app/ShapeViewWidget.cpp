@@ -7,7 +7,7 @@
 namespace colonosim::app {
 
 ShapeViewWidget::ShapeViewWidget(std::shared_ptr<const ProcedureScene> scene, QWidget* parent)
-    : QOpenGLWidget(parent), m_scene(std::move(scene))
+    : OffscreenGlWidget(parent), m_scene(std::move(scene))
 {
     setMinimumSize(320, 160);
     setMaximumSize(560, 280);
@@ -15,9 +15,10 @@ ShapeViewWidget::ShapeViewWidget(std::shared_ptr<const ProcedureScene> scene, QW
 
 ShapeViewWidget::~ShapeViewWidget()
 {
-    makeCurrent();
-    m_view.reset();
-    doneCurrent();
+    if (makeCurrent()) {  // the view's OpenGL objects belong to the widget's context
+        m_view.reset();
+        doneCurrent();
+    }
 }
 
 void ShapeViewWidget::showSnapshot(const Snapshot* snapshot)
@@ -37,7 +38,7 @@ void ShapeViewWidget::initializeGL()
     }
 }
 
-void ShapeViewWidget::paintGL()
+bool ShapeViewWidget::paintGL()
 {
     if (!m_view || m_snapshot == nullptr || m_snapshot->scopeNodes.empty()) {
         QPainter painter(this);
@@ -45,12 +46,13 @@ void ShapeViewWidget::paintGL()
         painter.setPen(QColor(230, 230, 230));
         painter.drawText(rect(), Qt::AlignCenter | Qt::TextWordWrap,
                          m_failure.isEmpty() ? tr("Preparing the scope…") : m_failure);
-        return;
+        return false;
     }
     const int width = static_cast<int>(this->width() * devicePixelRatioF());
     const int height = static_cast<int>(this->height() * devicePixelRatioF());
     m_view->render(m_scene->anatomy.centreline, m_snapshot->scopeNodes, m_snapshot->loopSegment,
-                   m_scene->settings.scope.outerDiameter, width, height, defaultFramebufferObject());
+                   m_scene->settings.scope.outerDiameter, width, height, framebufferObject());
+    return true;
 }
 
 }  // namespace colonosim::app

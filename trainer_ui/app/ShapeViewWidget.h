@@ -1,21 +1,20 @@
 #pragma once
 /// \file
 /// The scope-shape view in a window (as on magnetic endoscope imaging): a
-/// QOpenGLWidget hosting render::ShapeView, the anterior and lateral panels
+/// OffscreenGlWidget hosting render::ShapeView, the anterior and lateral panels
 /// of the colon's outline and the shaft from the latest snapshot, the
 /// segment holding a loop highlighted. Its caption is a label of the host.
 
 #include "simcore/render/ShapeView.h"
+#include "trainer_ui/app/OffscreenGlWidget.h"
 #include "trainer_ui/app/ProcedureScene.h"
 #include "trainer_ui/app/SimulationRunner.h"
-
-#include <QOpenGLWidget>
 
 #include <memory>
 
 namespace colonosim::app {
 
-class ShapeViewWidget : public QOpenGLWidget {
+class ShapeViewWidget : public OffscreenGlWidget {
     Q_OBJECT
 public:
     ShapeViewWidget(std::shared_ptr<const ProcedureScene> scene, QWidget* parent = nullptr);
@@ -26,7 +25,7 @@ public:
 
 protected:
     void initializeGL() override;
-    void paintGL() override;
+    bool paintGL() override;
 
 private:
     std::shared_ptr<const ProcedureScene> m_scene;
