@@ -41,7 +41,7 @@ ShapeView::~ShapeView()
 void ShapeView::drawPolyline(const std::vector<Eigen::Vector2d>& points,
                              const std::vector<double>& halfWidths, const Eigen::Vector4f& colour)
 {
-    m_vertices.clear();
+    const auto first = static_cast<GLint>(m_vertices.size() / 2);
     const auto push = [&](const Eigen::Vector2d& p) {
         m_vertices.push_back(static_cast<float>(p.x() / m_aspect));
         m_vertices.push_back(static_cast<float>(p.y()));
@@ -72,11 +72,19 @@ void ShapeView::drawPolyline(const std::vector<Eigen::Vector2d>& points,
             push(points[i + 1] + w1 * n);
         }
     }
+    m_batches.push_back({first, static_cast<GLsizei>(m_vertices.size() / 2) - first, colour});
+}
+
+void ShapeView::drawBatches()
+{
     m_gl.BindBuffer(GL_ARRAY_BUFFER, m_buffer);
     m_gl.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(m_vertices.size() * sizeof(float)),
                     m_vertices.data(), GL_STREAM_DRAW);
-    m_gl.Uniform4f(m_program->uniform("uColour"), colour[0], colour[1], colour[2], colour[3]);
-    m_gl.DrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(m_vertices.size() / 2));
+    const GLint colourUniform = m_program->uniform("uColour");
+    for (const Batch& batch : m_batches) {
+        m_gl.Uniform4f(colourUniform, batch.colour[0], batch.colour[1], batch.colour[2], batch.colour[3]);
+        m_gl.DrawArrays(GL_TRIANGLES, batch.first, batch.count);
+    }
 }
 
 void ShapeView::render(const geometry::Centreline& colon, std::span<const Eigen::Vector3d> scope,
@@ -91,6 +99,8 @@ void ShapeView::render(const geometry::Centreline& colon, std::span<const Eigen:
     gl.Disable(GL_DEPTH_TEST);
     m_program->use();
     gl.BindVertexArray(m_vao);
+    m_vertices.clear();
+    m_batches.clear();
 
     // Common scale for both panels: the colon's extent plus a margin.
     Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::max());
@@ -175,6 +185,7 @@ void ShapeView::render(const geometry::Centreline& colon, std::span<const Eigen:
     // Divider between the panels.
     drawPolyline({Eigen::Vector2d(0.0, -1.0), Eigen::Vector2d(0.0, 1.0)}, {1.0 / height, 1.0 / height},
                  {0.4F, 0.4F, 0.45F, 1.0F});
+    drawBatches();
     gl.BindVertexArray(0);
 }
 

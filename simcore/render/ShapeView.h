@@ -37,15 +37,28 @@ public:
                 GLuint framebuffer = 0);
 
 private:
+    /// Adds a polyline (discs at its nodes, quads between) to the frame's
+    /// vertices, drawn in `colour` after what was added before it.
     void drawPolyline(const std::vector<Eigen::Vector2d>& points, const std::vector<double>& halfWidths,
                       const Eigen::Vector4f& colour);
+    /// Uploads the frame's vertices once and draws the polylines in order
+    /// (one upload a frame: re-specifying a buffer between draws made the
+    /// software rasteriser wait for each draw before the next).
+    void drawBatches();
+
+    struct Batch {
+        GLint first;
+        GLsizei count;
+        Eigen::Vector4f colour;
+    };
 
     const GlFunctions& m_gl;
     std::unique_ptr<ShaderProgram> m_program;
     GLuint m_vao = 0;
     GLuint m_buffer = 0;
-    std::vector<float> m_vertices;
-    double m_aspect = 1.0;  ///< of the current target: polylines are built in NDC-y units
+    std::vector<float> m_vertices;  ///< the frame's, x y pairs
+    std::vector<Batch> m_batches;   ///< the frame's polylines, in drawing order
+    double m_aspect = 1.0;          ///< of the current target: polylines are built in NDC-y units
 };
 
 }  // namespace colonosim::render

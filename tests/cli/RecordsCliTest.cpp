@@ -272,9 +272,20 @@ TEST_F(RecordsCli, TheSignedPdfRendersVerifiesAndFailsWhenTampered)
     const auto tampered = colonosim("", "report verify " + path("tampered.pdf") + db());
     EXPECT_EQ(tampered.status, 1);
     EXPECT_NE(tampered.output.find("invalid"), std::string::npos) << tampered.output;
+    // Verifying never creates a database: with none at the path it says so.
+    const auto missing =
+        colonosim("", "report verify " + path("ada.pdf") + " --db " + path("missing.sqlite"));
+    EXPECT_EQ(missing.status, 2);
+    EXPECT_NE(missing.output.find("missing.sqlite: there is no such file"), std::string::npos)
+        << missing.output;
+    EXPECT_FALSE(std::filesystem::exists(path("missing.sqlite")));
     // A validly signed file that the records do not know (another database) fails too.
-    const auto elsewhere = colonosim("COLONOSIM_ADMIN_PASSWORD=other-secret-1",
-                                     "report verify " + path("ada.pdf") + " --db " + path("other.sqlite"));
+    ASSERT_EQ(colonosim("COLONOSIM_ADMIN_PASSWORD=other-secret-1 COLONOSIM_PASSWORD=other-secret-1",
+                        "user list --as admin --db " + path("other.sqlite"))
+                  .status,
+              0);
+    const auto elsewhere =
+        colonosim("", "report verify " + path("ada.pdf") + " --db " + path("other.sqlite"));
     EXPECT_EQ(elsewhere.status, 1);
     EXPECT_NE(elsewhere.output.find("no matching certificate"), std::string::npos) << elsewhere.output;
 }

@@ -2,8 +2,11 @@
 // (choosing the administrator's password), the login (a wrong password is
 // answered with a sentence), and a student taking the first task of the
 // curriculum with the autopilot and with the keyboard, seeing the results,
-// and replaying the session (seeking lands exactly on the recording). A
-// screenshot of every screen goes to the screenshots folder of the build.
+// and replaying the session (seeking lands exactly on the recording); then
+// the three roles in turn on one database: the student's session, seen and
+// replayed by the instructor of the student's cohort and reported by the
+// administrator, each logging in through the window. A screenshot of every
+// screen goes to the screenshots folder of the build.
 #include "db/Database.h"
 #include "db/Records.h"
 #include "scoring/Benchmarks.h"
@@ -27,6 +30,8 @@
 #include <QLineEdit>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QTabWidget>
+#include <QTableView>
 #include <QTableWidget>
 #include <QTest>
 #include <QTreeWidget>
@@ -34,7 +39,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <sstream>
 
 namespace {
 
@@ -353,6 +361,165 @@ TEST(Trainer, AStudentTakesTheFirstTaskSeesTheResultsAndReplaysIt)
     ASSERT_EQ(after.size(), 2u);
     EXPECT_EQ(after[1].device, "keyboard");
     EXPECT_GT(after[1].metrics.at("max_insertion"), 0.02);  // keys, then the mouse
+}
+
+/// StudentRecords with an instructor, ian, teaching ada's cohort.
+struct ThreeRoles : StudentRecords {
+    ThreeRoles()
+    {
+        const db::Actor admin = records.authenticate("admin", "admin-password-1");
+        records.addUser(admin, "ian", db::Role::Instructor, "ian-password-1");
+        records.addCohort(admin, "A");
+        records.addMember(admin, "A", "ada");
+        records.assignInstructor(admin, "A", "ian");
+    }
+};
+
+void chooseText(QComboBox* box, const QString& text)
+{
+    ASSERT_NE(box, nullptr);
+    const int k = box->findText(text, Qt::MatchStartsWith);
+    ASSERT_GE(k, 0) << text.toStdString();
+    box->setCurrentIndex(k);
+}
+
+std::string readFile(const std::filesystem::path& file)
+{
+    std::ifstream in(file, std::ios::binary);
+    std::stringstream bytes;
+    bytes << in.rdbuf();
+    return bytes.str();
+}
+
+TEST(Trainer, TheInstructorReplaysTheStudentsSessionAndTheAdministratorReportsIt)
+{
+    ThreeRoles fixture;
+    app::MainWindow window(fixture.database, fixture.records, fixture.dir.path());
+    window.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+    const db::Actor ada = fixture.records.authenticate("ada", "ada-password-1");
+
+    // The student: a short run with the autopilot; the heads-up display follows it.
+    logIn(window, "ada", "ada-password-1");
+    ASSERT_EQ(screenName(window), "studentHome");
+    app::ProcedureScreen* procedure = startProcedure(window, app::Driver::Autopilot, 3.0);
+    ASSERT_NE(procedure, nullptr);
+    const qint64 session = procedure->session();
+    EXPECT_NE(window.findChild<QWidget*>(QStringLiteral("shapeView")), nullptr)
+        << "the first task shows the scope-shape view";
+    ASSERT_SOON(procedure->shownTime() >= 2.0);
+    EXPECT_TRUE(child<QLabel>(window, "insertionDepth")->text().endsWith(QStringLiteral(" cm")));
+    EXPECT_NE(child<QLabel>(window, "insertionDepth")->text(), QStringLiteral("0.0 cm"));
+    EXPECT_EQ(child<QLabel>(window, "loopIndicator")->text(), QStringLiteral("no loop"));
+    EXPECT_TRUE(child<QLabel>(window, "procedureTimer")->text().startsWith(QStringLiteral("0:02")))
+        << child<QLabel>(window, "procedureTimer")->text().toStdString();
+    EXPECT_TRUE(child<QLabel>(window, "rates")->text().contains(QStringLiteral("frames/s")));
+    ASSERT_SOON(screenName(window) == QStringLiteral("resultsScreen"));
+
+    // Leaving a running procedure (Home) ends it as Esc does: stored, not lost.
+    click(window, "backToCurriculum");
+    procedure = startProcedure(window, app::Driver::Keyboard, 600.0);
+    ASSERT_NE(procedure, nullptr);
+    const qint64 left = procedure->session();
+    ASSERT_SOON(child<QLabel>(window, "procedureStatus")->text().contains("running"));
+    QTest::keyPress(procedure, Qt::Key_Up);
+    ASSERT_SOON(procedure->shownInsertion() > 0.01);
+    QTest::keyRelease(procedure, Qt::Key_Up);
+    click(window, "homeButton");
+    ASSERT_EQ(screenName(window), "studentHome");
+    std::vector<db::SessionRow> stored = fixture.records.sessions(ada, "ada");
+    ASSERT_EQ(stored.size(), 2u);
+    EXPECT_EQ(stored[1].id, left);
+    EXPECT_EQ(stored[1].status, "completed");
+    EXPECT_GT(stored[1].metrics.at("max_insertion"), 0.01);
+    click(window, "logOut");
+    ASSERT_EQ(screenName(window), "loginScreen");
+
+    // The instructor: the cohort's sessions, and a replay of the student's first one.
+    logIn(window, "ian", "ian-password-1");
+    ASSERT_EQ(screenName(window), "instructorHome");
+    EXPECT_TRUE(child<QLabel>(window, "whoIsLoggedIn")->text().contains("instructor"));
+    child<QTabWidget>(window, "instructorTabs")->setCurrentIndex(2);
+    chooseText(child<QComboBox>(window, "sessionTrainee"), QStringLiteral("ada"));
+    auto* table = child<QTableView>(window, "sessionTable");
+    ASSERT_SOON(table->model()->rowCount() == 2);
+    int row = -1;
+    for (int r = 0; r < table->model()->rowCount(); ++r) {
+        row = table->model()->index(r, 0).data().toLongLong() == session ? r : row;
+    }
+    ASSERT_GE(row, 0) << "the student's session is listed";
+    QTest::mouseClick(table->viewport(), Qt::LeftButton, {},
+                      table->visualRect(table->model()->index(row, 0)).center());
+    screenshot(window, "instructor-sessions-in-window");
+    click(window, "replayButton");
+    ASSERT_EQ(screenName(window), "replayScreen");
+    auto* replay = qobject_cast<app::ReplayScreen*>(window.currentScreen());
+    ASSERT_NE(replay, nullptr);
+    ASSERT_TRUE(replay->failure().isEmpty()) << replay->failure().toStdString();
+    EXPECT_NEAR(replay->duration(), 3.0, 1e-6);
+    ASSERT_SOON(replay->shown()->state == app::Snapshot::State::Paused);
+    // A quarter of the speed: the replay never runs ahead of a quarter of the wall clock.
+    chooseText(child<QComboBox>(window, "replaySpeed"), QStringLiteral("0.25"));
+    click(window, "replayPlay");
+    ASSERT_SOON(replay->shown()->frame.time > 0.0);
+    const double startedAt = replay->shown()->frame.time;
+    QElapsedTimer wall;
+    wall.start();
+    QTest::qWait(1200);
+    const double advanced = replay->shown()->frame.time - startedAt;
+    const double seconds = static_cast<double>(wall.elapsed()) / 1000.0;
+    EXPECT_GT(advanced, 0.0);
+    EXPECT_LE(advanced, 0.25 * seconds + 0.05) << "simulated " << advanced << " s in " << seconds << " s";
+    chooseText(child<QComboBox>(window, "replaySpeed"), QStringLiteral("1"));
+    ASSERT_SOON(replay->shown()->frame.time > 1.0);
+    click(window, "replayPause");
+    ASSERT_SOON(replay->shown()->state == app::Snapshot::State::Paused);
+    QTest::qWait(200);  // let both views draw the paused frame
+    screenshot(window, "instructor-replay");
+    click(window, "closeReplay");
+    ASSERT_EQ(screenName(window), "instructorHome");
+    click(window, "logOut");
+
+    // The administrator: the student's signed PDF report and xAPI statements.
+    logIn(window, "admin", "admin-password-1");
+    ASSERT_EQ(screenName(window), "adminHome");
+    child<QTabWidget>(window, "adminTabs")->setCurrentIndex(2);
+    chooseText(child<QComboBox>(window, "certTrainee"), QStringLiteral("ada"));
+    // A rule over the last 10 sessions says how many of them there are yet.
+    auto* rules = child<QTableView>(window, "ruleTable");
+    ASSERT_SOON(rules->model()->rowCount() > 0);
+    QString perforation;
+    for (int r = 0; r < rules->model()->rowCount(); ++r) {
+        if (rules->model()->index(r, 1).data().toString().contains(QStringLiteral("perforation"))) {
+            perforation = rules->model()->index(r, 3).data().toString();
+        }
+    }
+    EXPECT_EQ(perforation, QStringLiteral("2 of the 10 it needs"));
+    chooseText(child<QComboBox>(window, "exportScope"), QStringLiteral("trainee ada"));
+    const auto exportAs = [&](const QString& format, const std::filesystem::path& file) {
+        chooseText(child<QComboBox>(window, "exportFormat"), format);
+        auto* path = child<QLineEdit>(window, "exportPath");
+        path->clear();
+        QTest::keyClicks(path, QString::fromStdString(file.string()));
+        auto* button = child<QPushButton>(window, "exportButton");
+        QTest::mouseClick(button, Qt::LeftButton);
+        EXPECT_TRUE(waitUntil([&] { return button->isEnabled(); }));
+        return child<QLabel>(window, "exportStatus")->text();
+    };
+    const std::filesystem::path pdf = fixture.dir / "ada-report.pdf";
+    const QString pdfStatus = exportAs(QStringLiteral("PDF"), pdf);
+    EXPECT_TRUE(pdfStatus.startsWith(QStringLiteral("Written:"))) << pdfStatus.toStdString();
+    EXPECT_EQ(readFile(pdf).substr(0, 5), "%PDF-");
+    screenshot(window, "admin-export-in-window");
+    const std::filesystem::path xapi = fixture.dir / "ada-statements.json";
+    const QString xapiStatus = exportAs(QStringLiteral("xAPI"), xapi);
+    EXPECT_TRUE(xapiStatus.startsWith(QStringLiteral("Written:"))) << xapiStatus.toStdString();
+    const std::string statements = readFile(xapi);
+    EXPECT_NE(statements.find("\"actor\""), std::string::npos);
+    EXPECT_NE(statements.find(std::to_string(session)), std::string::npos)
+        << "the student's session is reported";
+    click(window, "logOut");
+    EXPECT_EQ(screenName(window), "loginScreen");
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include "trainer_ui/review/InstructorHome.h"
 
 #include <QApplication>
+#include <QCloseEvent>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QMessageBox>
@@ -115,8 +116,26 @@ void MainWindow::loggedIn(const db::Actor& actor)
     push(home);
 }
 
+void MainWindow::endRunningProcedure()
+{
+    for (QWidget* screen : m_screens) {
+        if (auto* procedure = qobject_cast<ProcedureScreen*>(screen)) {
+            m_leaving = true;
+            procedure->endAndStore();
+            m_leaving = false;
+        }
+    }
+}
+
+void MainWindow::closeEvent(QCloseEvent* event)
+{
+    endRunningProcedure();
+    QMainWindow::closeEvent(event);
+}
+
 void MainWindow::logOut()
 {
+    endRunningProcedure();
     for (QWidget* screen : m_screens) {
         m_stack->removeWidget(screen);
         delete screen;
@@ -152,6 +171,7 @@ void MainWindow::pop()
 
 void MainWindow::backToHome()
 {
+    endRunningProcedure();
     while (m_screens.size() > 1) {
         pop();
     }
@@ -191,7 +211,9 @@ void MainWindow::startProcedure()
         auto* screen = new ProcedureScreen(*m_context, brief->task(), scene, caseId, brief->options());
         connect(screen, &ProcedureScreen::completed, this, &MainWindow::procedureCompleted);
         connect(screen, &ProcedureScreen::failed, this, [this](const QString& message) {
-            pop();
+            if (!m_leaving) {
+                pop();
+            }
             showError(message);
         });
         push(screen);
@@ -205,6 +227,9 @@ void MainWindow::startProcedure()
 
 void MainWindow::procedureCompleted(qint64 session, const db::SessionResult& result)
 {
+    if (m_leaving) {
+        return;  // stored; the navigation that ended it takes the screens down
+    }
     auto* procedure = qobject_cast<ProcedureScreen*>(m_screens.back());
     TaskBrief* brief =
         m_screens.size() >= 2 ? qobject_cast<TaskBrief*>(m_screens[m_screens.size() - 2]) : nullptr;

@@ -6,7 +6,9 @@
 /// instructor: InstructorHome; administrator: AdminHome) is the base of a
 /// stack of screens that the person goes forward into and back out of
 /// (task brief, procedure, results, replay), so closing a screen returns to
-/// where they were.
+/// where they were. Leaving a running procedure (Home, Log out, closing the
+/// window) ends it as Esc does: the session is scored and stored before the
+/// screens go, never dropped.
 
 #include "db/Database.h"
 #include "db/Records.h"
@@ -42,6 +44,8 @@ public:
     [[nodiscard]] QWidget* currentScreen() const;
 
     void logOut();
+    /// Goes back to the role's home screen.
+    void backToHome();
     /// Opens the replay of `session` over the current screen.
     void openReplay(qint64 session);
 
@@ -49,12 +53,18 @@ private:
     void loggedIn(const db::Actor& actor);
     void push(QWidget* screen);
     void pop();
-    void backToHome();
+    /// Ends a procedure still running on the stack and stores its session
+    /// (as Esc does), before the screens above the home screen go.
+    void endRunningProcedure();
     void openBrief(const QString& task);
     void startProcedure();
     void procedureCompleted(qint64 session, const db::SessionResult& result);
     void showError(const QString& message);
 
+protected:
+    void closeEvent(QCloseEvent* event) override;
+
+private:
     db::Database& m_database;
     db::Records& m_records;
     std::filesystem::path m_exportDir;
@@ -64,6 +74,7 @@ private:
     QWidget* m_topBar = nullptr;
     QLabel* m_who = nullptr;
     std::vector<QWidget*> m_screens;  ///< above the login screen; the first is the home screen
+    bool m_leaving = false;           ///< a procedure is being ended by navigation: no results screen
 };
 
 }  // namespace colonosim::app

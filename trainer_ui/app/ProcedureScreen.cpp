@@ -10,6 +10,7 @@
 #include "trainer_ui/app/SimulationRunner.h"
 #include "trainer_ui/cli/SessionStore.h"
 
+#include <QApplication>
 #include <QHBoxLayout>
 #include <QKeyEvent>
 #include <QLabel>
@@ -17,6 +18,8 @@
 #include <QPushButton>
 #include <QTimer>
 #include <QVBoxLayout>
+
+#include <thread>
 
 namespace colonosim::app {
 
@@ -133,6 +136,22 @@ double ProcedureScreen::physicsRate() const
 void ProcedureScreen::endProcedure()
 {
     m_runner->requestEnd();
+}
+
+void ProcedureScreen::endAndStore()
+{
+    if (m_done) {
+        return;
+    }
+    m_runner->requestEnd();
+    QApplication::setOverrideCursor(Qt::WaitCursor);
+    // The loop stops at its next step (or once it is built, if it was still
+    // being prepared).
+    while (!m_runner->finished()) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    QApplication::restoreOverrideCursor();
+    finish();
 }
 
 void ProcedureScreen::sendControls()

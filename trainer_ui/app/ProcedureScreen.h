@@ -73,6 +73,9 @@ public:
     [[nodiscard]] double inputLatency() const { return m_inputLatency; }
     /// Ends the procedure as Esc does.
     void endProcedure();
+    /// Ends the procedure now and stores its session (emits completed or
+    /// failed before it returns); nothing when it has already ended.
+    void endAndStore();
 
 Q_SIGNALS:
     /// The session was stored; `result` is what was stored.

@@ -71,7 +71,7 @@ int runProgress(std::span<char* const> args)
                   << r["description"].get<std::string>() << " (observed "
                   << reports::observedText(r["observed"].is_null() ? std::nan("")
                                                                    : r["observed"].get<double>())
-                  << " over " << r["sessions"] << " session(s))\n";
+                  << " over " << reports::sessionsText(r) << " session(s))\n";
     }
     return 0;
 }

@@ -76,6 +76,18 @@ OpenRecords openRecords(const CommandLine& line, std::ostream& notices)
     return out;
 }
 
+OpenRecords openExistingRecords(const CommandLine& line)
+{
+    const std::filesystem::path path =
+        line.value("--db") ? std::filesystem::path(*line.value("--db")) : defaultDatabasePath();
+    if (!std::filesystem::is_regular_file(path)) {
+        throw UsageError(
+            "records database = " + path.string() +
+            ": there is no such file (it must be the database that issued the report; --db FILE)");
+    }
+    return openRecords(line, std::cerr);
+}
+
 db::Actor seedFirstStart(db::Records& records, const std::string& administrator, const std::string& password)
 {
     const db::Actor admin = records.bootstrapAdministrator(administrator, password);

@@ -49,6 +49,10 @@ db::Actor seedFirstStart(db::Records& records, const std::string& administrator,
 /// Opens `--db` or the default; on first start seeds it, writing the one-time
 /// notice to `notices`.
 [[nodiscard]] OpenRecords openRecords(const CommandLine& line, std::ostream& notices);
+/// The records database that already exists (for reading only, e.g. to
+/// verify a report against the database that issued it): never created or
+/// seeded; throws UsageError naming the path when there is none.
+[[nodiscard]] OpenRecords openExistingRecords(const CommandLine& line);
 
 /// A secret from `fileOption` (first line of the file) or else `envVar`;
 /// UsageError naming both when neither is given.

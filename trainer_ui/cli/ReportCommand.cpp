@@ -57,7 +57,7 @@ int verify(const CommandLine& line, const std::string& file)
         std::cout << "invalid: the signature does not match the content (the file was changed)\n";
         return 1;
     }
-    OpenRecords open = openRecords(line, std::cerr);
+    OpenRecords open = openExistingRecords(line);
     const auto record = open.records->certificateBySha(sha);
     if (!record || record->signature != trailer->signature || record->publicKey != trailer->publicKey ||
         record->user != trailer->user) {

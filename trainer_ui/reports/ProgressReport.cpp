@@ -64,6 +64,7 @@ nlohmann::json progressReport(const std::vector<db::SessionRow>& sessions, const
              {"met", r.met},
              {"observed", std::isnan(r.observed) ? nlohmann::json() : nlohmann::json(r.observed)},
              {"sessions", r.sessions},
+             {"window", r.rule->window},
              {"source", r.rule->source}});
     }
     return out;
@@ -83,6 +84,16 @@ std::string observedText(double observed)
     char text[32];
     std::snprintf(text, sizeof text, "%.3g", observed);
     return text;
+}
+
+std::string sessionsText(const nlohmann::json& rule)
+{
+    const int sessions = rule["sessions"].get<int>();
+    const int window = rule.value("window", 0);
+    if (window > 0 && sessions < window) {
+        return std::to_string(sessions) + " of the " + std::to_string(window) + " it needs";
+    }
+    return std::to_string(sessions);
 }
 
 }  // namespace colonosim::reports

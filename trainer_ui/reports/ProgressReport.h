@@ -28,6 +28,10 @@ namespace colonosim::reports {
 /// A certification rule's observed value as a person reads it: "none yet"
 /// when nothing has been observed (NaN), else the number to 3 significant digits.
 [[nodiscard]] std::string observedText(double observed);
+/// The sessions a certification rule of the report looked at, as a person
+/// reads them: "2", or "2 of the 10 it needs" while its window of last
+/// sessions is not yet filled (the rule cannot be met before).
+[[nodiscard]] std::string sessionsText(const nlohmann::json& rule);
 
 /// "NAME, version N": the rule set a progressReport() was judged by.
 [[nodiscard]] std::string ruleSetLabel(const nlohmann::json& progress);

@@ -170,7 +170,7 @@ void CertificationPage::showRules()
                 {status, new QStandardItem(QString::fromStdString(r["description"].get<std::string>())),
                  new QStandardItem(QString::fromStdString(reports::observedText(
                      r["observed"].is_null() ? std::nan("") : r["observed"].get<double>()))),
-                 new QStandardItem(QString::number(r["sessions"].get<int>())),
+                 new QStandardItem(QString::fromStdString(reports::sessionsText(r))),
                  new QStandardItem(QString::fromStdString(r["source"].get<std::string>()))});
             ++rules;
             met += ok ? 1 : 0;
