@@ -22,9 +22,9 @@
 // servo's largest force step against its rate limit. Takes the simulated
 // time in wall time at least (300 s by default).
 
+#include "simcore/devices/HandTarget.h"
 #include "simcore/devices/HdcController.h"
 #include "simcore/devices/HdcOperator.h"
-#include "simcore/devices/TripleBuffer.h"
 #include "simcore/geometry/ProceduralColon.h"
 #include "simcore/procedure/Operator.h"
 #include "simcore/procedure/ProcedureLoop.h"
@@ -42,23 +42,6 @@ namespace {
 
 using namespace colonosim;
 using namespace colonosim::devices;
-
-/// The expert's hand as the device's virtual hand sees it: the newest target
-/// the expert published, handed from the loop's thread to the HDC's.
-class HandTarget {
-public:
-    void publish(const procedure::InputSample& target) { m_buffer.write(target); }
-    /// HDC thread only.
-    procedure::InputSample latest()
-    {
-        m_buffer.read(m_last);
-        return m_last;
-    }
-
-private:
-    TripleBuffer<procedure::InputSample> m_buffer;
-    procedure::InputSample m_last;
-};
 
 double option(int argc, char** argv, const std::string& name, double fallback, double lo, double hi)
 {
