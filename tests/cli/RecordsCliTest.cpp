@@ -146,6 +146,45 @@ TEST_F(RecordsCli, UsersRolesAndRefusals)
     EXPECT_NE(task.output.find("--task = polypectomy cannot be run yet"), std::string::npos) << task.output;
 }
 
+TEST_F(RecordsCli, PasswordsComeFromFilesAndAChangedOneReplacesTheOld)
+{
+    const auto secret = [&](const std::string& name, const std::string& text) {
+        std::ofstream(path(name)) << text << '\n';  // a trailing newline, as an editor leaves it
+        return path(name);
+    };
+    const auto added = colonosim(kAdmin, "user add zoe --role student --as admin --new-password-file " +
+                                             secret("zoe-1", "zoe-secret-1") + db());
+    ASSERT_EQ(added.status, 0) << added.output;
+    // The acting user's password from a file instead of the environment.
+    const auto fromFile =
+        colonosim("", "user list --as zoe --password-file " + secret("zoe-as", "zoe-secret-1") + db());
+    EXPECT_EQ(fromFile.status, 0) << fromFile.output;
+    // A student changes their own password; the old one stops working.
+    const auto changed =
+        colonosim("COLONOSIM_PASSWORD=zoe-secret-1",
+                  "user passwd zoe --as zoe --new-password-file " + secret("zoe-2", "zoe-secret-2") + db());
+    ASSERT_EQ(changed.status, 0) << changed.output;
+    EXPECT_NE(changed.output.find("password of zoe changed"), std::string::npos) << changed.output;
+    const auto old = colonosim("COLONOSIM_PASSWORD=zoe-secret-1", "user list --as zoe" + db());
+    EXPECT_EQ(old.status, 2);
+    EXPECT_NE(old.output.find("authentication failed"), std::string::npos) << old.output;
+    EXPECT_EQ(colonosim("COLONOSIM_PASSWORD=zoe-secret-2", "user list --as zoe" + db()).status, 0);
+    // Nobody but an administrator changes another user's password.
+    const auto other = colonosim("COLONOSIM_PASSWORD=zoe-secret-2 COLONOSIM_NEW_PASSWORD=taken-over-1",
+                                 "user passwd ada --as zoe" + db());
+    EXPECT_EQ(other.status, 2);
+    EXPECT_NE(other.output.find("refused"), std::string::npos) << other.output;
+    EXPECT_EQ(colonosim("COLONOSIM_PASSWORD=ada-secret-1", "user list --as ada" + db()).status, 0);
+    const auto reset =
+        colonosim(kAdmin + " COLONOSIM_NEW_PASSWORD=zoe-secret-3", "user passwd zoe --as admin" + db());
+    EXPECT_EQ(reset.status, 0) << reset.output;
+    EXPECT_EQ(colonosim("COLONOSIM_PASSWORD=zoe-secret-3", "user list --as zoe" + db()).status, 0);
+    // A password file that does not exist is named.
+    const auto missing = colonosim("", "user list --as zoe --password-file " + path("no-such-file") + db());
+    EXPECT_EQ(missing.status, 2);
+    EXPECT_NE(missing.output.find("no-such-file"), std::string::npos) << missing.output;
+}
+
 TEST_F(RecordsCli, AnInstructorReadsTheStudentsOfTheirCohortsOnly)
 {
     auto must = [](const Result& r) { ASSERT_EQ(r.status, 0) << r.output; };
@@ -206,6 +245,45 @@ TEST_F(RecordsCli, SessionsAreStoredScoredAndRescored)
     EXPECT_EQ(again.status, 0) << again.output;
     EXPECT_NE(again.output.find("version 2"), std::string::npos) << again.output;
     EXPECT_NE(again.output.find("3 session(s) re-scored"), std::string::npos) << again.output;
+    // Re-scoring changes the stored scores, not only the message: benchmarks drawn
+    // from the novice's own session score that session as proficient.
+    const auto composite = [&] {
+        const auto r = colonosim("COLONOSIM_PASSWORD=ada-secret-1",
+                                 "report --user ada --format csv --out " + path("ada.csv") + db());
+        EXPECT_EQ(r.status, 0) << r.output;
+        std::istringstream lines(read(path("ada.csv")));
+        std::string head, last, line;
+        std::getline(lines, head);
+        while (std::getline(lines, line)) {
+            last = line;
+        }
+        const auto cells = [](const std::string& text) {
+            std::vector<std::string> out;
+            std::stringstream in(text);
+            for (std::string cell; std::getline(in, cell, ',');) {
+                out.push_back(cell);
+            }
+            return out;
+        };
+        const std::vector<std::string> names = cells(head);
+        const std::vector<std::string> values = cells(last);
+        const auto at = std::find(names.begin(), names.end(), "score:composite");
+        EXPECT_NE(at, names.end()) << head;
+        const auto k = static_cast<size_t>(at - names.begin());
+        return k < values.size() ? std::stod(values[k]) : std::nan("");
+    };
+    const auto secondRun =
+        colonosim("COLONOSIM_PASSWORD=ada-secret-1",
+                  "run --default --operator novice --max-time 1 --user ada --out " + path("ada2") + db());
+    ASSERT_EQ(secondRun.status, 0) << secondRun.output;  // two sessions to derive a spread from
+    const double before = composite();
+    const auto fromNovice =
+        colonosim(kAdmin, "benchmarks derive --name core-navigation --from-user ada --as admin" + db());
+    ASSERT_EQ(fromNovice.status, 0) << fromNovice.output;
+    EXPECT_NE(fromNovice.output.find("version 3"), std::string::npos) << fromNovice.output;
+    const double after = composite();
+    EXPECT_LT(before, 100.0);
+    EXPECT_GT(after, before) << "re-scored against benchmarks from its own values";
 }
 
 TEST_F(RecordsCli, XapiStatementsHaveTheStatementStructure)

@@ -457,6 +457,8 @@ TEST(Trainer, TheInstructorReplaysTheStudentsSessionAndTheAdministratorReportsIt
     ASSERT_NE(replay, nullptr);
     ASSERT_TRUE(replay->failure().isEmpty()) << replay->failure().toStdString();
     EXPECT_NEAR(replay->duration(), 3.0, 1e-6);
+    EXPECT_NE(window.findChild<QWidget*>(QStringLiteral("replayShapeView")), nullptr)
+        << "the instructor's replay always shows the scope-shape view";
     ASSERT_SOON(replay->shown()->state == app::Snapshot::State::Paused);
     // A quarter of the speed: the replay never runs ahead of a quarter of the wall clock.
     chooseText(child<QComboBox>(window, "replaySpeed"), QStringLiteral("0.25"));
@@ -520,6 +522,28 @@ TEST(Trainer, TheInstructorReplaysTheStudentsSessionAndTheAdministratorReportsIt
         << "the student's session is reported";
     click(window, "logOut");
     EXPECT_EQ(screenName(window), "loginScreen");
+}
+
+TEST(Trainer, TheShapeViewIsShownOnlyWhenTheTaskAllowsIt)
+{
+    StudentRecords fixture;
+    const db::Actor ada = fixture.records.authenticate("ada", "ada-password-1");
+    app::AppContext context{fixture.database, fixture.records, ada, fixture.dir.path()};
+    const curricula::Curriculum curriculum = app::loadCurriculum(context);
+    const std::shared_ptr<const app::ProcedureScene> scene = app::buildScene(std::nullopt);
+    app::ProcedureOptions options;
+    options.driver = app::Driver::Autopilot;
+    options.timeLimit = 0.5;
+    for (const char* id : {"navigation-straight", "complex-anatomy"}) {
+        const curricula::Task* task = curriculum.find(id);
+        ASSERT_NE(task, nullptr) << id;
+        app::ProcedureScreen screen(context, *task, scene, std::nullopt, options);
+        const bool shown = screen.findChild<QWidget*>(QStringLiteral("shapeView")) != nullptr;
+        EXPECT_EQ(shown, task->shapeView) << id;
+        screen.endAndStore();
+    }
+    EXPECT_FALSE(curriculum.find("complex-anatomy")->shapeView)
+        << "the assessment of difficult anatomy hides it";
 }
 
 }  // namespace
