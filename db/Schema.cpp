@@ -235,6 +235,13 @@ const std::vector<std::vector<const char*>>& migrations()
                  VALUES ((SELECT user_id FROM actor_context WHERE id = 1), 'certification_rule_sets', NEW.id,
                          'update', 'activated ' || NEW.name || ' version ' || NEW.version); END)",
         },
+        // 6: a deleted progress row is audited too (scores and certificates were)
+        {
+            R"(CREATE TRIGGER progress_audit_delete AFTER DELETE ON progress BEGIN
+                 INSERT INTO audit (actor_id, table_name, row_id, action, detail)
+                 VALUES ((SELECT user_id FROM actor_context WHERE id = 1), 'progress', OLD.id, 'delete',
+                         OLD.task || ' ' || OLD.state); END)",
+        },
     };
     return all;
 }

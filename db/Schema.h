@@ -19,6 +19,8 @@
 ///      never changed but for `active`, never deleted; imports and
 ///      activations audited. The shipped core rule set is stored as
 ///      version 1, active, imported by no one
+///   6  deleting a progress row is audited (inserts and updates were; the
+///      layer never deletes one, but a change outside it leaves a trace)
 
 #include <QSqlDatabase>
 

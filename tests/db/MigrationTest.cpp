@@ -10,6 +10,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <string>
+#include <vector>
+
 namespace {
 
 using namespace colonosim;
@@ -150,6 +154,66 @@ TEST(AuditLog, RecordsChangesAndRefusesUpdateAndDelete)
     EXPECT_NE(query.lastError().text().toStdString().find("append-only"), std::string::npos);
     EXPECT_FALSE(query.exec(QStringLiteral("DELETE FROM audit")));
     EXPECT_EQ(records.audit(admin).size(), 4u);
+}
+
+TEST(AuditLog, RecordsScoresProgressAndCertificatesWithTheirActor)
+{
+    test::TempDir dir;
+    db::Database database(dir / "records.sqlite");
+    db::Records records(database);
+    const db::Actor admin = records.bootstrapAdministrator("root", "correct horse battery");
+    records.addUser(admin, "ada", db::Role::Student, "ada-password");
+    const db::Actor ada = records.authenticate("ada", "ada-password");
+    const size_t before = records.audit(admin).size();
+
+    // A session stored with its score and the progress it made.
+    const qint64 session = records.beginSession(ada, std::nullopt, "navigation-straight", "keyboard");
+    db::SessionResult result;
+    result.duration = 1.0;
+    result.scores = {{"composite", 71.5}};
+    result.curriculum = "colonoscopy-core";
+    result.progress = {{"navigation-straight", "proficient"}};
+    records.completeSession(ada, session, result);
+    // Re-scored by the administrator, then a certificate issued.
+    const qint64 set = records.storeBenchmarkSet(admin, "core-navigation", 1, "{}");
+    records.rescore(admin, session, {{"composite", 80.0}}, set);
+    records.issueCertificate(admin, "ada", std::string(64, 'a'), "signature", "public-key");
+    // A progress row deleted outside the layer (which never deletes one) leaves a trace too.
+    {
+        QSqlQuery query(database.connection());
+        ASSERT_TRUE(query.exec(QStringLiteral("DELETE FROM progress")));
+    }
+
+    const auto log = records.audit(admin);
+    ASSERT_GT(log.size(), before);
+    std::vector<std::string> seen;
+    for (size_t k = before; k < log.size(); ++k) {
+        seen.push_back(log[k].table + " " + log[k].action + " by " + log[k].actor + ": " + log[k].detail);
+    }
+    const auto has = [&](const std::string& line) {
+        return std::find(seen.begin(), seen.end(), line) != seen.end();
+    };
+    const std::string s = std::to_string(session);
+    EXPECT_TRUE(has("scores insert by ada: session " + s + " composite=71.5"))
+        << ::testing::PrintToString(seen);
+    EXPECT_TRUE(has("progress insert by ada: navigation-straight proficient"))
+        << ::testing::PrintToString(seen);
+    bool rescored = false;
+    bool certified = false;
+    bool progressDeleted = false;
+    for (size_t k = before; k < log.size(); ++k) {
+        const db::AuditRow& row = log[k];
+        rescored = rescored || (row.table == "scores" && row.actor == "root" &&
+                                row.detail.find("composite") != std::string::npos &&
+                                row.detail.find("80") != std::string::npos);
+        certified =
+            certified || (row.table == "certificates" && row.action == "insert" && row.actor == "root");
+        progressDeleted = progressDeleted || (row.table == "progress" && row.action == "delete" &&
+                                              row.detail == "navigation-straight proficient");
+    }
+    EXPECT_TRUE(rescored) << ::testing::PrintToString(seen);
+    EXPECT_TRUE(certified) << ::testing::PrintToString(seen);
+    EXPECT_TRUE(progressDeleted) << ::testing::PrintToString(seen);
 }
 
 TEST(Passwords, AreStoredAsArgon2idAndVerified)
