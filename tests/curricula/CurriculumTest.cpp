@@ -9,6 +9,14 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <utility>
+
 namespace {
 
 using namespace colonosim;
@@ -208,6 +216,33 @@ TEST(Certification, BadRuleFilesAreRefused)
     ASSERT_FALSE(read.ok());
     EXPECT_EQ(read.errors.at(0), "rules.xml:2: metric \"nonsense\" is not a declared scoring metric");
     EXPECT_EQ(read.errors.at(1), "rules.xml:2: value = 2.000000 is out of range 0-1 for a share");
+}
+
+TEST(Curriculum, TheShippedFilesValidateAgainstTheirSchemas)
+{
+    // xmllint (libxml2-utils, from the setup script) validates; the readers
+    // check the same constraints themselves, so the XSDs must not drift.
+    const std::string root = COLONOSIM_SOURCE_DIR;
+    for (const auto& [file, schema] : {std::pair{"colonoscopy-core.xml", "curriculum.xsd"},
+                                       std::pair{"certification-rules.xml", "certification.xsd"}}) {
+        const std::string command = "xmllint --noout --schema " + root + "/curricula/schema/" + schema + " " +
+                                    root + "/curricula/" + file + " >/dev/null 2>&1";
+        EXPECT_EQ(std::system(command.c_str()), 0) << command;
+    }
+    // A schema does refuse a broken file: a task without its title.
+    std::string text = curricula::coreCurriculumXml();
+    const size_t title = text.find(" title=\"Navigate an easy colon\"");
+    ASSERT_NE(title, std::string::npos);
+    text.erase(title, std::string(" title=\"Navigate an easy colon\"").size());
+    const std::filesystem::path broken =
+        std::filesystem::temp_directory_path() /
+        ("colonosim-broken-curriculum-" + std::to_string(::getpid()) + ".xml");
+    std::ofstream(broken) << text;
+    EXPECT_NE(std::system(("xmllint --noout --schema " + root + "/curricula/schema/curriculum.xsd " +
+                           broken.string() + " >/dev/null 2>&1")
+                              .c_str()),
+              0);
+    std::filesystem::remove(broken);
 }
 
 }  // namespace

@@ -90,4 +90,37 @@ TEST(RenderCli, WritesViewAndShapePngsOfTheAskedSize)
     EXPECT_GT(lit, image.width() * image.height() / 10);
 }
 
+TEST(RenderCli, AContactSheetTilesFramesAlongARunAndReportsTheMucosaSeen)
+{
+    const std::filesystem::path dir(COLONOSIM_TEST_ARTEFACTS);
+    std::filesystem::create_directories(dir);
+    const auto sheet = dir / "cli_contact_sheet.png";
+    std::filesystem::remove(sheet);
+    const auto r = runColonosim("render --default --operator expert --contact-sheet " + sheet.string() +
+                                " --max-time 4 --frames 4 --size 160x120");
+    ASSERT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("4 frames over 4"), std::string::npos) << r.output;
+    // The mucosa seen, overall and per segment, from the renderer's coverage.
+    const size_t at = r.output.find("mucosa visualised ");
+    ASSERT_NE(at, std::string::npos) << r.output;
+    const double seen = std::stod(r.output.substr(at + std::string("mucosa visualised ").size()));
+    EXPECT_GT(seen, 0.0) << r.output;
+    EXPECT_LT(seen, 20.0) << "4 s in the rectum sees a small part of the colon: " << r.output;
+    EXPECT_NE(r.output.find("rectum "), std::string::npos) << r.output;
+    // Four tiles side by side, each with the lit wall in it.
+    const QImage image(QString::fromStdString(sheet.string()));
+    ASSERT_FALSE(image.isNull());
+    EXPECT_EQ(image.width(), 4 * 160);
+    EXPECT_EQ(image.height(), 120);
+    for (int tile = 0; tile < 4; ++tile) {
+        int lit = 0;
+        for (int y = 0; y < 120; ++y) {
+            for (int x = tile * 160; x < (tile + 1) * 160; ++x) {
+                lit += qGray(image.pixel(x, y)) > 60 ? 1 : 0;
+            }
+        }
+        EXPECT_GT(lit, 160 * 120 / 20) << "tile " << tile;
+    }
+}
+
 }  // namespace
