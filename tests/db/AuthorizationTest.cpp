@@ -101,6 +101,13 @@ TEST(Authorization, EveryRoleAgainstEveryOperation)
              (void)db::CertificationRules(database).versions(a);
          },
          true, true, true},
+        {"store a case (the case a session runs on)",
+         [](Records& r, const Actor& a, qint64) {
+             (void)r.storeCase(a, "case-" + a.name + ".xml", "<case/>");
+         },
+         true, true, true},
+        {"read a curriculum", [](Records& r, const Actor& a, qint64) { (void)r.curriculum(a, "core"); }, true,
+         true, true},
         {"read the audit log", [](Records& r, const Actor& a, qint64) { (void)r.audit(a); }, true, false,
          false},
         {"take a backup",
