@@ -26,9 +26,14 @@ constexpr std::array kDefinitions = {
         "withdrawal quality studies"},
     MetricDefinition{
         "mucosa_visualised", "1", Better::Higher,
-        "share of the colon length passed by the tip with a clear view (geometric estimate until the "
-        "renderer's coverage exists)",
+        "share of the wall area seen: inside the lens's view, within working distance, at a sufficient "
+        "angle and not occluded (the renderer's coverage, 10 Hz); where the renderer cannot run, the share "
+        "of the colon length passed by the tip with a clear view (geometric estimate)",
         kMentor},
+    MetricDefinition{
+        "mucosa_from_renderer", "1", Better::Neither,
+        "1 when mucosa_visualised came from the renderer's coverage, 0 from the geometric estimate",
+        "model choice: says how the figure beside it was obtained"},
     MetricDefinition{"clear_view", "1", Better::Higher, "share of the time without red-out", kMentor},
     MetricDefinition{"red_out_count", "1", Better::Lower, "red-outs (lens against the wall)",
                      "JAG DOPS: tip control avoids red-outs"},

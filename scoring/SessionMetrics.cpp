@@ -200,9 +200,15 @@ MetricValues computeMetrics(const procedure::Recording& recording, const Scoring
     m["tip_path_length"] = path;
     m["max_insertion"] = maxInsertion;
     m["insertion_efficiency"] = forward > 0.0 ? maxInsertion / forward : 0.0;
-    m["mucosa_visualised"] =
-        bins > 0 ? static_cast<double>(std::count(seen.begin(), seen.end(), true)) / static_cast<double>(bins)
-                 : 0.0;
+    if (context.mucosaSeen) {
+        m["mucosa_visualised"] = std::clamp(*context.mucosaSeen, 0.0, 1.0);
+        m["mucosa_from_renderer"] = 1.0;
+    } else {
+        m["mucosa_visualised"] = bins > 0 ? static_cast<double>(std::count(seen.begin(), seen.end(), true)) /
+                                                static_cast<double>(bins)
+                                          : 0.0;
+        m["mucosa_from_renderer"] = 0.0;
+    }
     return m;
 }
 

@@ -30,6 +30,7 @@
 #include "simcore/procedure/Recorder.h"
 
 #include <map>
+#include <optional>
 #include <string>
 
 namespace colonosim::scoring {
@@ -58,6 +59,11 @@ struct ScoringContext {
     double moderateDiscomfort = moderateDiscomfortSpec.defaultValue;
     double mucosaBin = mucosaBinSpec.defaultValue;  ///< m
     int lesionsPresent = 0;
+    /// Seen wall area over the whole wall's (0-1), from the renderer's
+    /// coverage of the session (cli::SessionCoverage); none: the geometric
+    /// estimate from the recording. It gives % mucosa visualised, and
+    /// mucosa_from_renderer says which it was.
+    std::optional<double> mucosaSeen;
 };
 
 /// All declared metrics except time_to_cecum when the cecum was not reached.

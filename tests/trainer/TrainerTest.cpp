@@ -414,6 +414,8 @@ TEST(Trainer, TheInstructorReplaysTheStudentsSessionAndTheAdministratorReportsIt
     EXPECT_TRUE(child<QLabel>(window, "procedureTimer")->text().startsWith(QStringLiteral("0:02")))
         << child<QLabel>(window, "procedureTimer")->text().toStdString();
     EXPECT_TRUE(child<QLabel>(window, "rates")->text().contains(QStringLiteral("frames/s")));
+    ASSERT_SOON(child<QLabel>(window, "mucosaSeen")->text().endsWith(QStringLiteral("% of the wall")) &&
+                !child<QLabel>(window, "mucosaSeen")->text().startsWith(QStringLiteral("0.0%")));
     ASSERT_SOON(screenName(window) == QStringLiteral("resultsScreen"));
 
     // Leaving a running procedure (Home) ends it as Esc does: stored, not lost.
@@ -429,6 +431,10 @@ TEST(Trainer, TheInstructorReplaysTheStudentsSessionAndTheAdministratorReportsIt
     ASSERT_EQ(screenName(window), "studentHome");
     std::vector<db::SessionRow> stored = fixture.records.sessions(ada, "ada");
     ASSERT_EQ(stored.size(), 2u);
+    // % mucosa visualised came from the renderer's coverage of the session.
+    EXPECT_EQ(stored[0].metrics.at("mucosa_from_renderer"), 1.0);
+    EXPECT_GT(stored[0].metrics.at("mucosa_visualised"), 0.0);
+    EXPECT_LT(stored[0].metrics.at("mucosa_visualised"), 0.5);
     EXPECT_EQ(stored[1].id, left);
     EXPECT_EQ(stored[1].status, "completed");
     EXPECT_GT(stored[1].metrics.at("max_insertion"), 0.01);

@@ -61,12 +61,15 @@ HeadsUpDisplay::HeadsUpDisplay(double excessiveForce, QWidget* parent)
     m_timer->setObjectName(QStringLiteral("procedureTimer"));
     m_rates = new QLabel;
     m_rates->setObjectName(QStringLiteral("rates"));
+    m_mucosa = new QLabel;
+    m_mucosa->setObjectName(QStringLiteral("mucosaSeen"));
     form->addRow(tr("Insertion"), m_depth);
     form->addRow(tr("Handle force"), m_force);
     form->addRow(QString(), m_forceText);
     form->addRow(tr("Comfort"), m_comfort);
     form->addRow(QString(), m_comfortText);
     form->addRow(tr("Loop"), m_loop);
+    form->addRow(tr("Mucosa seen"), m_mucosa);
     form->addRow(tr("Time"), m_timer);
     form->addRow(tr("Rates"), m_rates);
     showSnapshot(Snapshot{}, 0.0, 0.0);
@@ -115,6 +118,9 @@ void HeadsUpDisplay::showSnapshot(const Snapshot& snapshot, double graphicsRate,
         frame.loop == procedure::LoopKind::None
             ? QStringLiteral("color: #3fa34d; font-weight: bold;")
             : QStringLiteral("color: white; background: #c0392b; font-weight: bold; padding: 2px;"));
+    m_mucosa->setText(snapshot.mucosaSeen < 0.0
+                          ? tr("not measured")
+                          : tr("%1% of the wall").arg(100.0 * snapshot.mucosaSeen, 0, 'f', 1));
     m_timer->setText(tr("%1 of %2").arg(clock(frame.time), clock(timeLimit)));
     m_rates->setText(
         snapshot.state == Snapshot::State::Running

@@ -38,6 +38,7 @@ private:
     QLabel* m_loop;
     QLabel* m_timer;
     QLabel* m_rates;
+    QLabel* m_mucosa;  ///< the renderer's coverage so far
 };
 
 }  // namespace colonosim::app

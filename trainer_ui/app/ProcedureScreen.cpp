@@ -98,6 +98,7 @@ ProcedureScreen::ProcedureScreen(AppContext& context, const curricula::Task& tas
 
     RunnerOptions runnerOptions;
     runnerOptions.maxTime = options.timeLimit;
+    runnerOptions.coverage = true;  // % mucosa visualised, for the display and the score
     m_runner = std::make_unique<SimulationRunner>(m_scene, std::move(driver), runnerOptions);
     m_timer = new QTimer(this);
     m_timer->setTimerType(Qt::PreciseTimer);
@@ -260,6 +261,7 @@ void ProcedureScreen::finish()
         scoring::ScoringContext scoringContext;
         scoringContext.colonLength = m_scene->settings.recorder.colonLength;
         scoringContext.lesionsPresent = m_scene->lesionsPresent;
+        scoringContext.mucosaSeen = m_runner->mucosaSeen();
         const db::SessionResult result = cli::completeStoredSession(
             m_context.records, m_context.actor, m_session, m_task.id, *loop, scoringContext);
         Q_EMIT completed(m_session, result);

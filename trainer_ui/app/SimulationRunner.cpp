@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <iostream>
 
 namespace colonosim::app {
 
@@ -44,12 +45,21 @@ const procedure::ProcedureLoop* SimulationRunner::loop() const
     return finished() ? m_loop.get() : nullptr;
 }
 
+std::optional<double> SimulationRunner::mucosaSeen()
+{
+    if (!finished() || !m_coverage) {
+        return std::nullopt;
+    }
+    return m_coverage->finalFraction();
+}
+
 void SimulationRunner::publish(Snapshot::State state, double physicsRate)
 {
     Snapshot& out = m_snapshots.back();
     out.state = state;
     out.failure = m_failure;
     out.physicsRate = physicsRate;
+    out.mucosaSeen = m_coverage ? m_coverage->latestFraction() : -1.0;
     if (m_loop) {
         const procedure::ProcedureLoop& loop = *m_loop;
         out.frame = loop.lastFrame();
@@ -79,6 +89,9 @@ void SimulationRunner::run(std::stop_token stop)
         return;
     }
     procedure::ProcedureLoop& loop = *m_loop;
+    if (m_options.coverage) {
+        m_coverage = cli::tryCoverage(m_scene->anatomy, std::cerr);
+    }
     auto* hdc = dynamic_cast<devices::HdcOperator*>(m_driver.get());
     render::LensSoiling lens{render::RenderParameters{}};
     const double dt = loop.trace().loopStep;
@@ -139,6 +152,9 @@ void SimulationRunner::run(std::stop_token stop)
             hdc->recordConnection(loop);
         }
         loop.step(m_driver->next(loop));
+        if (m_coverage) {
+            m_coverage->observe(loop);
+        }
         const procedure::ProcedureFrame& frame = loop.lastFrame();
         lens.update(dt, frame.lensWallDistance, (frame.input.buttons & procedure::kWater) != 0);
         m_lensSoiling = lens.amount();

@@ -21,6 +21,7 @@
 #include "simcore/procedure/ProcedureLoop.h"
 #include "trainer_ui/app/ProcedureScene.h"
 #include "trainer_ui/app/TripleBuffer.h"
+#include "trainer_ui/cli/SessionCoverage.h"
 
 #include <Eigen/Core>
 
@@ -45,7 +46,9 @@ struct Snapshot {
     std::optional<geometry::Segment> loopSegment;
     double lensSoiling = 0.0;  ///< 0..1
     double physicsRate = 0.0;  ///< loop steps per wall-clock second
-    std::string failure;       ///< when Failed: what went wrong, as a sentence
+    /// Wall area seen so far, 0..1 (the renderer's coverage); < 0 when it is not measured.
+    double mucosaSeen = -1.0;
+    std::string failure;  ///< when Failed: what went wrong, as a sentence
 };
 
 struct RunnerOptions {
@@ -53,6 +56,8 @@ struct RunnerOptions {
     double speed = 1.0;      ///< simulated seconds per wall-clock second
     bool startPaused = false;
     double seekTo = 0.0;  ///< s: run unpaced up to here, then pause (0: no seek)
+    /// Measure the renderer's mucosal coverage of the session (cli::SessionCoverage).
+    bool coverage = false;
 };
 
 class SimulationRunner {
@@ -84,6 +89,9 @@ public:
     /// After finished(): the loop (null when it could not be built).
     [[nodiscard]] const procedure::ProcedureLoop* loop() const;
     [[nodiscard]] const ProcedureScene& scene() const { return *m_scene; }
+    /// After finished(): the session's coverage, 0..1, every hand-over drawn;
+    /// none when it was not measured (RunnerOptions::coverage) or the renderer cannot run here.
+    [[nodiscard]] std::optional<double> mucosaSeen();
 
 private:
     void run(std::stop_token stop);
@@ -93,6 +101,7 @@ private:
     std::unique_ptr<procedure::Operator> m_driver;
     RunnerOptions m_options;
     std::unique_ptr<procedure::ProcedureLoop> m_loop;  ///< owned by the thread until finished
+    std::unique_ptr<cli::SessionCoverage> m_coverage;  ///< made on the thread; thread-safe
     TripleBuffer<Snapshot> m_snapshots;
     double m_lensSoiling = 0.0;
     std::string m_failure;

@@ -24,6 +24,7 @@
 #include "trainer_ui/cli/CommandLine.h"
 #include "trainer_ui/cli/Commands.h"
 #include "trainer_ui/cli/RecordsAccess.h"
+#include "trainer_ui/cli/SessionCoverage.h"
 #include "trainer_ui/cli/SessionStore.h"
 #include "trainer_ui/reports/TraineeReport.h"
 
@@ -155,8 +156,12 @@ int runDemo(std::span<char* const> args)
     const auto driver = procedure::makeOperator("expert");
     const auto started = std::chrono::steady_clock::now();
     const auto steps = static_cast<long>(maxTime / loop.trace().loopStep);
+    const std::unique_ptr<SessionCoverage> coverage = tryCoverage(anatomy, log);
     for (long s = 0; s < steps && !driver->finished(); ++s) {
         loop.step(driver->next(loop));
+        if (coverage) {
+            coverage->observe(loop);
+        }
     }
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     log << "2. expert operator: " << loop.time() << " s simulated in " << wall << " s\n";
@@ -165,6 +170,9 @@ int runDemo(std::span<char* const> args)
     scoring::ScoringContext context;
     context.colonLength = settings.recorder.colonLength;
     context.lesionsPresent = static_cast<int>(theCase.lesions.size());
+    if (coverage) {
+        context.mucosaSeen = coverage->finalFraction();
+    }
     const db::SessionResult result =
         completeStoredSession(*open.records, student, session, kDemoTask, loop, context);
     log << "3. session " << session << " of " << kDemoStudent << " stored with " << result.metrics.size()

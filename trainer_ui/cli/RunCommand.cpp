@@ -4,7 +4,8 @@
 /// input trace, a Haptic Device Controller (colonosim-hdc) connecting over OpenIGTLink on PORT, or a gamepad.
 /// Writes DIR/session.trace (the input trace), DIR/samples.csv, DIR/events.csv and DIR/recording.txt (the
 /// canonical recording: two runs are bit-identical when these files are equal), and prints a summary: time to
-/// cecum, loops by type, peak handle force, peak discomfort.
+/// cecum, loops by type, peak handle force, peak discomfort, and the mucosa visualised (the
+/// renderer's coverage of the wall, SessionCoverage).
 /// With `--user NAME [--db FILE] [--task ID]` the session is also stored and scored in the records: inserted
 /// as running before the first step, and completed in one transaction with its trace, recording, events,
 /// metrics, scores and the user's progress (see RecordsAccess.h for authentication).
@@ -20,6 +21,7 @@
 #include "trainer_ui/cli/CommandLine.h"
 #include "trainer_ui/cli/Commands.h"
 #include "trainer_ui/cli/RecordsAccess.h"
+#include "trainer_ui/cli/SessionCoverage.h"
 #include "trainer_ui/cli/SessionStore.h"
 
 #include <nlohmann/json.hpp>
@@ -179,6 +181,8 @@ int runProcedure(std::span<char* const> args)
     // clock for it. The HDC keeps time itself (a step per device frame);
     // scripted and replayed input runs as fast as the loop can.
     const bool wallClock = *operatorName == "gamepad";
+    // The renderer's coverage of the wall, 10 times a simulated second: % mucosa visualised.
+    const std::unique_ptr<SessionCoverage> coverage = tryCoverage(anatomy, std::cerr);
     const auto start = std::chrono::steady_clock::now();
     for (long s = 0; s < steps && !driver->finished(); ++s) {
         if (wallClock) {
@@ -190,6 +194,9 @@ int runProcedure(std::span<char* const> args)
             hdc->recordConnection(loop);
         }
         loop.step(driver->next(loop));
+        if (coverage) {
+            coverage->observe(loop);
+        }
     }
     const std::filesystem::path dir(*out);
     procedure::writeTrace(dir / "session.trace", loop.trace());
@@ -197,11 +204,18 @@ int runProcedure(std::span<char* const> args)
     std::ofstream(dir / "recording.txt") << loop.recording().canonicalText();
 
     nlohmann::json summary = summarise(loop.recording(), loop.time());
+    const std::optional<double> mucosaSeen =
+        coverage ? std::optional<double>(coverage->finalFraction()) : std::nullopt;
+    summary["mucosa_visualised"] = mucosaSeen ? nlohmann::json(*mucosaSeen) : nlohmann::json();
+    if (coverage) {
+        summary["coverage"] = {{"draws", coverage->draws()}, {"draw_seconds", coverage->drawSeconds()}};
+    }
     std::string storedLine;
     if (user) {
         scoring::ScoringContext context;
         context.colonLength = settings.recorder.colonLength;
         context.lesionsPresent = lesionsPresent;
+        context.mucosaSeen = mucosaSeen;
         const db::SessionResult result =
             completeStoredSession(*records.records, actor, session, task, loop, context);
         summary["session"] = session;
@@ -241,6 +255,11 @@ int runProcedure(std::span<char* const> args)
                   << fixed(summary["looped_time_s"].get<double>(), 2) << " s\n"
                   << "peak handle force: " << fixed(summary["peak_handle_force_N"].get<double>(), 1)
                   << " N; peak discomfort " << fixed(summary["peak_discomfort"].get<double>(), 1) << " / 10\n"
+                  << "mucosa visualised: "
+                  << (summary["mucosa_visualised"].is_null()
+                          ? std::string("not measured (no renderer here)")
+                          : fixed(100.0 * summary["mucosa_visualised"].get<double>(), 1) + "% of the wall")
+                  << '\n'
                   << "written: " << (dir / "session.trace").string()
                   << ", samples.csv, events.csv, recording.txt\n"
                   << storedLine;

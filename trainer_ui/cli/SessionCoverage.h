@@ -1,0 +1,77 @@
+#pragma once
+/// \file
+/// The renderer's mucosal coverage of a running session, for scoring (%
+/// mucosa visualised) and the heads-up display: a render::CoverageTracker
+/// on an offscreen (OSMesa) context of its own thread. The loop's thread
+/// only hands over the wall's node positions and the tip pose every
+/// coverageInterval of simulated time (10 Hz by default; a copy of about
+/// 46 kB), so the 1 kHz loop never waits for a draw (about 1.4 ms each).
+/// Every hand-over is drawn, in order: the result depends on the simulated
+/// session only, and a replayed session covers the same wall.
+
+#include "simcore/geometry/ProceduralColon.h"
+#include "simcore/procedure/ProcedureLoop.h"
+#include "simcore/render/FisheyeLens.h"
+
+#include <Eigen/Core>
+
+#include <atomic>
+#include <condition_variable>
+#include <deque>
+#include <iosfwd>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+
+namespace colonosim::cli {
+
+class SessionCoverage {
+public:
+    /// Starts the coverage thread and waits until its context and tracker
+    /// are made; throws render::RenderError (or std::runtime_error) when they cannot be.
+    explicit SessionCoverage(const geometry::ColonAnatomy& anatomy);
+    ~SessionCoverage();
+    SessionCoverage(const SessionCoverage&) = delete;
+    SessionCoverage& operator=(const SessionCoverage&) = delete;
+
+    /// Loop thread, after each step: hands the wall over when coverageInterval has passed.
+    void observe(const procedure::ProcedureLoop& loop);
+    /// The coverage of everything handed over, once drawn: seen wall area over
+    /// the whole wall's, 0-1. Waits for the coverage thread to catch up.
+    [[nodiscard]] double finalFraction();
+    /// The latest coverage drawn so far, 0-1 (never waits; for a display).
+    [[nodiscard]] double latestFraction() const { return m_latest.load(std::memory_order_relaxed); }
+    /// Wall-clock seconds the coverage thread spent drawing, and the draws.
+    [[nodiscard]] double drawSeconds() const;
+    [[nodiscard]] int draws() const;
+
+private:
+    struct Job {
+        Eigen::Matrix3Xd positions;
+        render::CameraPose pose;
+    };
+    void work(const geometry::ColonAnatomy& anatomy);
+
+    double m_interval = 0.1;  ///< s simulated between hand-overs (RenderParameters::coverageInterval)
+    double m_next = 0.0;      ///< s simulated: the next hand-over
+    mutable std::mutex m_mutex;
+    std::condition_variable m_changed;
+    std::deque<Job> m_jobs;   ///< under m_mutex
+    bool m_ready = false;     ///< under m_mutex: the worker made its tracker (or failed)
+    bool m_stop = false;      ///< under m_mutex
+    bool m_busy = false;      ///< under m_mutex: a job is being drawn
+    std::string m_failure;    ///< under m_mutex
+    double m_seconds = 0.0;   ///< under m_mutex
+    int m_draws = 0;          ///< under m_mutex
+    double m_fraction = 0.0;  ///< under m_mutex
+    std::atomic<double> m_latest{0.0};
+    std::thread m_thread;
+};
+
+/// The coverage of a session when the renderer can run here; none (the
+/// scoring's geometric estimate then) with the reason on `notices`.
+[[nodiscard]] std::unique_ptr<SessionCoverage> tryCoverage(const geometry::ColonAnatomy& anatomy,
+                                                           std::ostream& notices);
+
+}  // namespace colonosim::cli
