@@ -99,7 +99,10 @@ void SessionCoverage::observe(const procedure::ProcedureLoop& loop)
     m_next = loop.time() + m_interval;
     const scope::TipPose& tip = loop.outputs().tip;
     {
-        const std::lock_guard lock(m_mutex);
+        std::unique_lock lock(m_mutex);
+        // A loop far faster than the draws (a scripted run in a sleeping
+        // colon) waits rather than queue without bound; nothing is dropped.
+        m_changed.wait(lock, [this] { return m_jobs.size() < kMaxQueued; });
         m_jobs.push_back({loop.colon().body.positions(), {tip.position, tip.rotation}});
     }
     m_changed.notify_all();

@@ -46,6 +46,9 @@ public:
     [[nodiscard]] double drawSeconds() const;
     [[nodiscard]] int draws() const;
 
+    /// Hand-overs waiting at most (about 12 MB); observe() waits beyond.
+    static constexpr size_t kMaxQueued = 256;
+
 private:
     struct Job {
         Eigen::Matrix3Xd positions;
