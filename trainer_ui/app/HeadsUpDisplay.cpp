@@ -107,8 +107,14 @@ void HeadsUpDisplay::showSnapshot(const Snapshot& snapshot, double graphicsRate,
     const double force = std::abs(frame.handleForce) < 0.05 ? 0.0 : frame.handleForce;
     m_force->setValue(static_cast<int>(std::clamp(std::abs(force), 0.0, kForceScale) * 10.0));
     colour(m_force, std::abs(force) >= m_excessiveForce ? "#e0463c" : "#3fa34d");
-    m_forceText->setText(
-        tr("%1 N (excessive at %2 N)").arg(force, 0, 'f', 1).arg(m_excessiveForce, 0, 'f', 0));
+    // The gauge shows the magnitude; the words say which way it acts (+ resists insertion).
+    const QString direction = force > 0.0   ? tr(", resisting insertion")
+                              : force < 0.0 ? tr(", resisting withdrawal")
+                                            : QString();
+    m_forceText->setText(tr("%1 N%2 (excessive at %3 N)")
+                             .arg(std::abs(force), 0, 'f', 1)
+                             .arg(direction)
+                             .arg(m_excessiveForce, 0, 'f', 0));
     m_comfort->setValue(static_cast<int>(std::clamp(frame.discomfort, 0.0, 10.0) * 10.0));
     const int scale = procedure::comfortScale(frame.discomfort);
     colour(m_comfort, scale >= 4 ? "#e0463c" : (scale == 3 ? "#e0a43c" : "#3fa34d"));

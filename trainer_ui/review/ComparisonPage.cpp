@@ -33,7 +33,7 @@ QString label(const db::SessionRow& s)
 QString value(const std::map<std::string, double>& values, const std::string& name)
 {
     const auto it = values.find(name);
-    return it == values.end() ? QStringLiteral("—") : QString::number(it->second, 'g', 6);
+    return it == values.end() ? QStringLiteral("—") : QString::number(it->second, 'g', 3);
 }
 
 /// The unit as a person reads it: blank for a count, share or score (unit 1).
@@ -136,7 +136,7 @@ void ComparisonPage::redraw()
         } else if (x == first.metrics.end() || y == second.metrics.end()) {
             verdict = QStringLiteral("not measured in both");
         } else if (row[2]->text() == row[3]->text()) {
-            // Equal to the 6 significant digits shown: a difference no one can read is no verdict.
+            // Equal to the 3 significant digits shown: a difference no one can read is no verdict.
             verdict = QStringLiteral("equal");
         } else {
             const bool aBetter =
