@@ -56,8 +56,7 @@ int runTrainer(std::span<char* const> args)
     QApplication::setApplicationName(QStringLiteral("colonosim"));
     QApplication application(argc, argv);
 
-    const std::filesystem::path path =
-        line.value("--db") ? std::filesystem::path(*line.value("--db")) : cli::defaultDatabasePath();
+    const std::filesystem::path path = cli::databasePath(line);
     if (path.has_parent_path()) {
         std::filesystem::create_directories(path.parent_path());
     }

@@ -45,11 +45,16 @@ std::filesystem::path defaultDatabasePath()
     return std::filesystem::path(dir.toStdString()) / "records.sqlite";
 }
 
+std::filesystem::path databasePath(const CommandLine& line)
+{
+    const std::optional<std::string> given = line.value("--db");
+    return given ? std::filesystem::path(*given) : defaultDatabasePath();
+}
+
 OpenRecords openRecords(const CommandLine& line, std::ostream& notices)
 {
     ensureQtApplication();
-    const std::filesystem::path path =
-        line.value("--db") ? std::filesystem::path(*line.value("--db")) : defaultDatabasePath();
+    const std::filesystem::path path = databasePath(line);
     if (path.has_parent_path()) {
         std::filesystem::create_directories(path.parent_path());
     }
@@ -78,8 +83,7 @@ OpenRecords openRecords(const CommandLine& line, std::ostream& notices)
 
 OpenRecords openExistingRecords(const CommandLine& line)
 {
-    const std::filesystem::path path =
-        line.value("--db") ? std::filesystem::path(*line.value("--db")) : defaultDatabasePath();
+    const std::filesystem::path path = databasePath(line);
     if (!std::filesystem::is_regular_file(path)) {
         throw UsageError(
             "records database = " + path.string() +

@@ -30,6 +30,8 @@ inline const std::vector<std::string> kRecordsOptions = {"--db", "--as", "--pass
 void ensureQtApplication(bool gui = false);
 
 [[nodiscard]] std::filesystem::path defaultDatabasePath();
+/// The records database a command names: `--db FILE`, else the default.
+[[nodiscard]] std::filesystem::path databasePath(const CommandLine& line);
 
 struct OpenRecords {
     std::unique_ptr<db::Database> database;
