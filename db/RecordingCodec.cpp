@@ -164,10 +164,9 @@ procedure::Recording decodeRecording(const std::vector<char>& bytes)
     for (auto& e : recording.events) {
         e.time = std::bit_cast<double>(take<std::uint64_t>(raw, r, "events"));
         const auto kind = take<std::uint8_t>(raw, r, "events");
-        if (kind > static_cast<std::uint8_t>(procedure::EventKind::ContactBleeding)) {
-            throw RecordingCodecError(
-                "recording: event kind " + std::to_string(kind) + " is outside [0, " +
-                std::to_string(static_cast<int>(procedure::EventKind::ContactBleeding)) + "]");
+        if (kind > static_cast<std::uint8_t>(procedure::kLastEventKind)) {
+            throw RecordingCodecError("recording: event kind " + std::to_string(kind) + " is outside [0, " +
+                                      std::to_string(static_cast<int>(procedure::kLastEventKind)) + "]");
         }
         e.kind = static_cast<procedure::EventKind>(kind);
         const auto length = take<std::uint32_t>(raw, r, "events");

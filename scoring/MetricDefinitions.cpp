@@ -68,6 +68,15 @@ constexpr std::array kDefinitions = {
     MetricDefinition{"time_to_detection", "s", Better::Lower,
                      "mean time from a detected lesion's first coming into view to its mark", kMentor},
     MetricDefinition{"false_lesion_marks", "1", Better::Lower, "marks made with no lesion in view", kMentor},
+    MetricDefinition{"colon_length", "m", Better::Neither,
+                     "the case's colon, centreline length (the geometric mucosa estimate's bins span it; "
+                     "re-scoring reads it back)",
+                     "model choice: a property of the case, kept with the session's figures"},
+    MetricDefinition{
+        "lesions_from_renderer", "1", Better::Neither,
+        "1 when a lesion counted as in view only where the renderer showed it (a fold in front hides "
+        "it), 0 by the loop's own signal (no occlusion test)",
+        "model choice: says how the lesion figures beside it were obtained"},
     MetricDefinition{"tip_path_length", "m", Better::Lower, "distance travelled by the tip", kMentor},
     MetricDefinition{"insertion_efficiency", "1", Better::Higher,
                      "deepest insertion over the total forward shaft travel (1: never backed off)",

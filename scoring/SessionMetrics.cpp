@@ -63,12 +63,105 @@ double unionAfter(std::vector<std::pair<double, double>> a, const std::vector<st
     }
     return total;
 }
+
+/// Lesion detection: which lesions a mark found, when each was first in
+/// view, and the marks that found none.
+struct Detection {
+    std::map<std::string, double> firstMark, firstSeen;  // by lesion name
+    int falseMarks = 0;
+    bool fromRenderer = false;
+};
+
+/// With the renderer's LesionOnScreen / LesionOffScreen events (a session the
+/// renderer watched), a mark at t finds a lesion on screen at t within
+/// `tolerance` (the renderer looks 10 times a second): the lesion the mark
+/// names when it is one of them, else the first not yet found. Without
+/// them, the loop's own signal: the lesion the mark names (LesionInView,
+/// no occlusion test).
+Detection detectLesions(const std::vector<procedure::RecordedEvent>& events, double end, double tolerance)
+{
+    using procedure::EventKind;
+    Detection d;
+    d.fromRenderer = std::any_of(events.begin(), events.end(), [](const auto& e) {
+        return e.kind == EventKind::LesionOnScreen || e.kind == EventKind::LesionOffScreen;
+    });
+    std::map<std::string, Intervals> onScreen;
+    std::vector<const procedure::RecordedEvent*> marks;
+    for (const auto& e : events) {
+        if (e.kind == EventKind::LesionMarked) {
+            marks.push_back(&e);
+        } else if (d.fromRenderer ? e.kind == EventKind::LesionOnScreen : e.kind == EventKind::LesionInView) {
+            d.firstSeen.emplace(e.detail, e.time);
+            onScreen[e.detail].start(e.time);
+        } else if (d.fromRenderer && e.kind == EventKind::LesionOffScreen) {
+            onScreen[e.detail].end(e.time);
+        }
+    }
+    if (!d.fromRenderer) {
+        for (const auto* mark : marks) {
+            if (d.firstSeen.count(mark->detail) != 0) {
+                d.firstMark.emplace(mark->detail, mark->time);
+            } else {
+                ++d.falseMarks;
+            }
+        }
+        return d;
+    }
+    for (auto& [lesion, intervals] : onScreen) {
+        intervals.end(end);  // still on screen when the session ended
+    }
+    for (const auto* mark : marks) {
+        const double t = mark->time;
+        std::vector<std::string> candidates;  // on screen at the mark, in name order
+        for (const auto& [lesion, intervals] : onScreen) {
+            if (std::any_of(intervals.closed.begin(), intervals.closed.end(), [&](const auto& i) {
+                    return t >= i.first - tolerance && t <= i.second + tolerance;
+                })) {
+                candidates.push_back(lesion);
+            }
+        }
+        if (candidates.empty()) {
+            ++d.falseMarks;
+            continue;
+        }
+        auto notFound = [&](const std::string& lesion) { return d.firstMark.count(lesion) == 0; };
+        std::string found;
+        if (std::find(candidates.begin(), candidates.end(), mark->detail) != candidates.end() &&
+            notFound(mark->detail)) {
+            found = mark->detail;
+        } else if (const auto it = std::find_if(candidates.begin(), candidates.end(), notFound);
+                   it != candidates.end()) {
+            found = *it;
+        }
+        if (!found.empty()) {
+            d.firstMark.emplace(found, t);
+        }  // else a lesion found before, marked again: neither new nor false
+    }
+    return d;
+}
 }  // namespace
+
+ScoringContext storedContext(const MetricValues& stored)
+{
+    ScoringContext context;
+    if (const auto it = stored.find("lesions_present"); it != stored.end()) {
+        context.lesionsPresent = static_cast<int>(it->second);
+    }
+    if (const auto it = stored.find("colon_length"); it != stored.end()) {
+        context.colonLength = it->second;
+    }
+    if (const auto it = stored.find("mucosa_from_renderer"); it != stored.end() && it->second > 0.5) {
+        context.mucosaSeen = stored.at("mucosa_visualised");
+    }
+    return context;
+}
 
 MetricValues computeMetrics(const procedure::Recording& recording, const ScoringContext& context)
 {
     params::require("scoring", ScoringContext::moderateDiscomfortSpec, context.moderateDiscomfort);
     params::require("scoring", ScoringContext::mucosaBinSpec, context.mucosaBin);
+    params::require("scoring", ScoringContext::sightingToleranceSpec, context.sightingTolerance);
+    params::require("scoring", ScoringContext::colonLengthSpec, context.colonLength);
     MetricValues m;
     const auto& samples = recording.samples;
     const double end = samples.empty() ? 0.0 : samples.back().time;
@@ -77,8 +170,7 @@ MetricValues computeMetrics(const procedure::Recording& recording, const Scoring
     // Events: cecum, red-out intervals, loops, perforation, lesion marks.
     double cecum = -1.0;
     Intervals redOuts, cleanings;
-    int loops = 0, reduced = 0, falseMarks = 0;
-    std::map<std::string, double> firstInView, firstMark;  // by lesion name
+    int loops = 0, reduced = 0;
     bool perforation = false;
     for (const char* name :
          {"loops_n", "loops_alpha", "loops_reverse_alpha", "loops_gamma", "loops_reverse_splenic"}) {
@@ -105,14 +197,6 @@ MetricValues computeMetrics(const procedure::Recording& recording, const Scoring
         }
         case procedure::EventKind::LoopResolved: ++reduced; break;
         case procedure::EventKind::Perforation: perforation = true; break;
-        case procedure::EventKind::LesionInView: firstInView.emplace(e.detail, e.time); break;
-        case procedure::EventKind::LesionMarked:
-            if (firstInView.count(e.detail) != 0) {
-                firstMark.emplace(e.detail, e.time);
-            } else {
-                ++falseMarks;
-            }
-            break;
         default: break;
         }
     }
@@ -139,16 +223,20 @@ MetricValues computeMetrics(const procedure::Recording& recording, const Scoring
     m["loop_count"] = loops;
     m["loops_reduced"] = std::min(reduced, loops);
     m["perforation"] = perforation ? 1.0 : 0.0;
+    const Detection detection = detectLesions(recording.events, end, context.sightingTolerance);
     m["lesions_present"] = context.lesionsPresent;
-    m["lesions_detected"] = static_cast<double>(std::min<size_t>(firstMark.size(), context.lesionsPresent));
+    m["colon_length"] = context.colonLength;
+    m["lesions_detected"] =
+        static_cast<double>(std::min<size_t>(detection.firstMark.size(), context.lesionsPresent));
     m["lesions_missed"] = context.lesionsPresent - m["lesions_detected"];
-    m["false_lesion_marks"] = falseMarks;
-    if (!firstMark.empty()) {
+    m["false_lesion_marks"] = detection.falseMarks;
+    m["lesions_from_renderer"] = detection.fromRenderer ? 1.0 : 0.0;
+    if (!detection.firstMark.empty()) {
         double sum = 0.0;
-        for (const auto& [lesion, marked] : firstMark) {
-            sum += marked - firstInView.at(lesion);
+        for (const auto& [lesion, marked] : detection.firstMark) {
+            sum += std::max(0.0, marked - detection.firstSeen.at(lesion));
         }
-        m["time_to_detection"] = sum / static_cast<double>(firstMark.size());
+        m["time_to_detection"] = sum / static_cast<double>(detection.firstMark.size());
     }
 
     // Samples.

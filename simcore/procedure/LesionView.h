@@ -42,6 +42,12 @@ public:
     [[nodiscard]] int count() const { return static_cast<int>(m_node.size()); }
     /// The wall node carrying lesion k.
     [[nodiscard]] int node(int k) const { return m_node[static_cast<size_t>(k)]; }
+    /// The wall triangles around lesion k's node (indices into the
+    /// anatomy's physicsMesh): what the renderer's coverage looks for.
+    [[nodiscard]] const std::vector<int>& triangles(int k) const
+    {
+        return m_triangles[static_cast<size_t>(k)];
+    }
 
 private:
     const geometry::ColonAnatomy& m_anatomy;

@@ -100,6 +100,12 @@ public:
     [[nodiscard]] const ProcedureOutputs& outputs() const { return m_outputs; }
     [[nodiscard]] const ProcedureFrame& lastFrame() const { return m_frame; }
     [[nodiscard]] const Recording& recording() const { return m_recorder.recording(); }
+    /// m: the colon's centreline length, as the recorder uses it (the
+    /// anatomy's, whatever settings.recorder.colonLength says); what scoring's
+    /// geometric mucosa estimate needs (ScoringContext::colonLength).
+    [[nodiscard]] double colonLength() const { return m_recorder.parameters().colonLength; }
+    /// The case's lesions on the wall, as the loop's "lesion in view" sees them.
+    [[nodiscard]] const LesionView& lesions() const { return m_lesions; }
     /// Whether the recording holds the cecum_reached event (the tip within
     /// RecorderParameters::cecumDepth of the end of the colon).
     [[nodiscard]] bool cecumReached() const { return m_recorder.cecumReached(); }

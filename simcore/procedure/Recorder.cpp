@@ -1,10 +1,12 @@
 #include "simcore/procedure/Recorder.h"
 
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 namespace colonosim::procedure {
@@ -31,6 +33,8 @@ std::string_view eventName(EventKind kind)
     case EventKind::CleaningStart: return "cleaning_start";
     case EventKind::CleaningEnd: return "cleaning_end";
     case EventKind::ContactBleeding: return "contact_bleeding";
+    case EventKind::LesionOnScreen: return "lesion_on_screen";
+    case EventKind::LesionOffScreen: return "lesion_off_screen";
     }
     return "unknown";
 }
@@ -153,6 +157,16 @@ RecordedSample quantizeSample(const RecordedSample& sample)
     q.mesenteryStrain = round(sample.mesenteryStrain, R::strainSpec.defaultValue);
     q.discomfort = round(sample.discomfort, R::discomfortSpec.defaultValue);
     return q;
+}
+
+void Recording::mergeEvents(const std::vector<RecordedEvent>& more)
+{
+    std::vector<RecordedEvent> merged;
+    merged.reserve(events.size() + more.size());
+    // std::merge takes from the first range at equal keys: the recorder's own events first.
+    std::merge(events.begin(), events.end(), more.begin(), more.end(), std::back_inserter(merged),
+               [](const RecordedEvent& a, const RecordedEvent& b) { return a.time < b.time; });
+    events = std::move(merged);
 }
 
 std::string Recording::canonicalText() const

@@ -83,7 +83,17 @@ enum class EventKind {
     CleaningStart,       ///< water (lens wash / jet) or suction held
     CleaningEnd,         ///< neither held any more
     ContactBleeding,     ///< a contact bleeding mark appeared (BleedingMarks.h)
+    /// The renderer's picture shows lesion K (detail "lesion K"): one of its
+    /// triangles has a pixel in the coverage ID buffer, depth-tested, so a
+    /// fold in front hides it. Noted by cli::SessionCoverage at its updates
+    /// (10 Hz), not by the loop; at its first update every lesion gets
+    /// LesionOnScreen or LesionOffScreen, so a recording watched by the
+    /// renderer says so even when no lesion ever came on screen.
+    LesionOnScreen,
+    LesionOffScreen,  ///< detail: "lesion K"; the renderer's picture no longer shows it
 };
+/// The last EventKind, for range checks of stored codes.
+inline constexpr EventKind kLastEventKind = EventKind::LesionOffScreen;
 [[nodiscard]] std::string_view eventName(EventKind kind);
 /// "lesion K" for the lesion of index `index` (K = index + 1), as events name it.
 [[nodiscard]] std::string lesionName(int index);
@@ -198,6 +208,9 @@ struct Recording {
 
     /// Hexadecimal floats, one line per sample and per event.
     [[nodiscard]] std::string canonicalText() const;
+    /// Adds `more` (each in time order) to the events, keeping them in time
+    /// order; at equal times the events already here come first.
+    void mergeEvents(const std::vector<RecordedEvent>& more);
     void writeCsv(const std::filesystem::path& samplesCsv, const std::filesystem::path& eventsCsv) const;
 };
 
@@ -210,6 +223,7 @@ public:
     /// An event that does not come from the frame (an input device came or went).
     void note(double time, EventKind kind, std::string detail) { event(time, kind, std::move(detail)); }
     [[nodiscard]] const Recording& recording() const { return m_recording; }
+    [[nodiscard]] const RecorderParameters& parameters() const { return m_parameters; }
     /// Whether the cecum_reached event has been recorded.
     [[nodiscard]] bool cecumReached() const { return m_cecumReached; }
 

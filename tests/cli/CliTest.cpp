@@ -121,6 +121,27 @@ TEST(Cli, RunSummaryPrintsRoundedFigures)
     std::filesystem::remove_all(dir);
 }
 
+// The run's summary gives the renderer's % mucosa visualised overall and by
+// segment: 2 s of the expert see part of the rectum, none of the cecum, and
+// the overall figure is the segments' weighted by their wall.
+TEST(Cli, RunJsonGivesTheMucosaSeenOverallAndBySegment)
+{
+    const std::filesystem::path dir = tempDir();
+    const Result r =
+        run("run --default --operator expert --max-time 2 --json --out " + (dir / "run").string(), true);
+    ASSERT_EQ(r.status, 0) << r.output;
+    const nlohmann::json summary = nlohmann::json::parse(r.output);
+    ASSERT_TRUE(summary["mucosa_visualised"].is_number()) << r.output;
+    const double overall = summary["mucosa_visualised"].get<double>();
+    const nlohmann::json& bySegment = summary["mucosa_visualised_by_segment"];
+    ASSERT_EQ(bySegment.size(), static_cast<size_t>(colonosim::geometry::kNumSegments)) << r.output;
+    EXPECT_GT(bySegment["rectum"].get<double>(), overall) << "only the rectum is seen so far";
+    EXPECT_LE(bySegment["rectum"].get<double>(), 1.0);
+    EXPECT_EQ(bySegment["cecum"].get<double>(), 0.0);
+    EXPECT_GT(overall, 0.0);
+    std::filesystem::remove_all(dir);
+}
+
 TEST(Cli, ParameterDocumentationIsUpToDate)
 {
     const Result r = run("params --markdown");

@@ -621,3 +621,21 @@ TEST(ProcedureLoop, SpinFrictionResistsTheShaftTurningOnTheWall)
     EXPECT_LT(resisted, 1.2 * spun.slidingMoment);
     EXPECT_LT(spun.largestTipStep, 2e-3) << "the turn stays smooth";
 }
+
+namespace {
+
+// Scoring's geometric mucosa estimate spans the case's colon: the loop gives
+// the anatomy's centreline length, not the settings' default.
+TEST(ProcedureLoop, TheColonLengthIsTheAnatomysWhateverTheSettingsSay)
+{
+    geometry::AnatomyParameters shorter;
+    shorter.transverseLength = geometry::AnatomyParameters::transverseLengthSpec.minValue;
+    const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(shorter);
+    const procedure::ProcedureSettings settings;
+    const procedure::ProcedureLoop loop(anatomy, settings);
+    EXPECT_DOUBLE_EQ(loop.colonLength(), anatomy.centreline.length());
+    EXPECT_LT(loop.colonLength(), settings.recorder.colonLength - 0.05)
+        << "a shorter transverse colon than the default's";
+}
+
+}  // namespace

@@ -5,10 +5,12 @@
 #include "simcore/render/CoverageTracker.h"
 #include "simcore/render/OffscreenContext.h"
 #include "simcore/render/ShapeView.h"
+#include "simcore/render/WallVisibility.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <numbers>
 
 namespace {
 
@@ -71,6 +73,51 @@ TEST(Coverage, RateLimitedUpdatesAndLesionInView)
     ASSERT_EQ(tracker.lesionsInView().size(), 2U);
     EXPECT_TRUE(tracker.lesionsInView()[0]);
     EXPECT_FALSE(tracker.lesionsInView()[1]);
+}
+
+// A haustral fold between the lens and a lesion hides it from the renderer,
+// though the lesion is inside the lens's circle, within working distance
+// and facing the lens: what the loop's own signal (wallPointInView, no
+// occlusion test) counts as in view. Without the fold the renderer shows it.
+TEST(Coverage, AFoldInFrontHidesALesionThatThePointTestCountsInView)
+{
+    constexpr double kRadius = 0.02;
+    constexpr int kAround = 32;
+    render::RenderParameters parameters;
+    render::OffscreenContext context(64, 64);
+    geometry::TriangleMesh wall = colonosim::testing::straightTube(kRadius, 0.3, 0.004, kAround);
+    const Eigen::Vector3d lesion(kRadius, 0.0, 0.03);
+    const std::vector<int> lesionTriangles = render::trianglesNear(wall, lesion, 0.005);
+    const auto pose = colonosim::testing::axialPose(0.0);
+    ASSERT_TRUE(render::wallPointInView(pose, lesion, Eigen::Vector3d(-1.0, 0.0, 0.0), parameters));
+
+    auto shown = [&](const geometry::TriangleMesh& mesh) {
+        render::CoverageTracker tracker(
+            context.gl(), mesh,
+            std::vector<geometry::Segment>(mesh.triangles.size(), geometry::Segment::Sigmoid), parameters);
+        tracker.setLesionTriangles({lesionTriangles});
+        tracker.observe(mesh.vertices, pose);
+        return static_cast<bool>(tracker.lesionsInView()[0]);
+    };
+    EXPECT_TRUE(shown(wall));
+
+    // The fold: an annulus at z = 2 cm from the wall in to 8 mm of the axis.
+    // The ray to the lesion crosses z = 2 cm at 13 mm from the axis.
+    geometry::TriangleMesh folded = wall;
+    const auto first = static_cast<int>(folded.vertices.cols());
+    folded.vertices.conservativeResize(3, first + 2 * kAround);
+    for (int j = 0; j < kAround; ++j) {
+        const double a = 2.0 * std::numbers::pi * j / kAround;
+        folded.vertices.col(first + j) = Eigen::Vector3d(0.008 * std::cos(a), 0.008 * std::sin(a), 0.02);
+        folded.vertices.col(first + kAround + j) =
+            Eigen::Vector3d(0.0199 * std::cos(a), 0.0199 * std::sin(a), 0.02);
+    }
+    for (int j = 0; j < kAround; ++j) {
+        const int in0 = first + j, in1 = first + (j + 1) % kAround;
+        folded.triangles.push_back({in0, in1, in1 + kAround});
+        folded.triangles.push_back({in0, in1 + kAround, in0 + kAround});
+    }
+    EXPECT_FALSE(shown(folded)) << "the fold hides the lesion from the lens";
 }
 
 TEST(ShapeView, DrawsColonScopeAndHighlightedLoop)

@@ -33,12 +33,12 @@ qint64 storeRun(db::Records& records, const db::Actor& student, const geometry::
         loop.step(driver->next(loop));
     }
     scoring::ScoringContext context;
-    context.colonLength = settings.recorder.colonLength;
+    context.colonLength = loop.colonLength();
     const scoring::MetricValues values = scoring::computeMetrics(loop.recording(), context);
     if (metrics) {
         *metrics = values;
     }
-    db::SessionResult result = cli::storedSession(loop);
+    db::SessionResult result = cli::storedSession(loop, loop.recording());
     cli::scoreInto(records, student, "navigation-straight", values, result);
     records.completeSession(student, session, result);
     return session;

@@ -84,9 +84,29 @@ TEST(Metrics, FromAHandMadeRecording)
     // Bins of 1 cm over 1 m; insertion covers 0-50 cm (bins 0..50 minus none: the
     // red-out from 6 to 7 s only repeats depths seen on the way in).
     EXPECT_NEAR(m.at("mucosa_visualised"), 0.51, 1e-9);
+    EXPECT_DOUBLE_EQ(m.at("colon_length"), 1.0) << "kept for re-scoring";
     for (const auto& [name, value] : m) {
         EXPECT_NE(scoring::findMetric(name), nullptr) << name << " is not declared";
     }
+}
+
+// Re-scoring reads the context back from the stored metrics and gets the
+// same figures from the recording: with the geometric mucosa estimate on a
+// colon of another length than the default, and with the renderer's figure.
+TEST(Metrics, TheStoredMetricsGiveBackTheContextTheyWereScoredIn)
+{
+    scoring::ScoringContext context;
+    context.colonLength = 1.2;
+    context.lesionsPresent = 2;
+    const scoring::MetricValues geometric = scoring::computeMetrics(handMade(), context);
+    EXPECT_EQ(scoring::computeMetrics(handMade(), scoring::storedContext(geometric)), geometric);
+    EXPECT_NE(scoring::computeMetrics(handMade(), {}).at("mucosa_visualised"),
+              geometric.at("mucosa_visualised"))
+        << "the default colon's length would change the estimate";
+    context.mucosaSeen = 0.37;
+    const scoring::MetricValues rendered = scoring::computeMetrics(handMade(), context);
+    EXPECT_EQ(scoring::computeMetrics(handMade(), scoring::storedContext(rendered)), rendered);
+    EXPECT_EQ(scoring::storedContext(rendered).mucosaSeen, 0.37);
 }
 
 TEST(Metrics, TheCecumNotReachedLeavesTimeToCecumAbsent)
@@ -125,6 +145,98 @@ TEST(Metrics, ASessionEndingWhileCleaningIsClosedAtTheEnd)
 {
     // Cleaning from 9 s to the end (10 s) without an end event: 1 s, plus the red-out's 1 s.
     EXPECT_DOUBLE_EQ(effectiveWithdrawal({{9.0, EventKind::CleaningStart, ""}}), 4.0);
+}
+
+// The renderer watched handMade()'s session: its lesion events replace the
+// loop's lesion-in-view signal (which has no occlusion test).
+scoring::MetricValues watched(std::vector<procedure::RecordedEvent> onScreen)
+{
+    procedure::Recording r = handMade();
+    r.mergeEvents(onScreen);
+    scoring::ScoringContext context;
+    context.lesionsPresent = 2;
+    return scoring::computeMetrics(r, context);
+}
+
+TEST(Metrics, AMarkOfALesionTheRendererShowedFindsIt)
+{
+    // Lesion 2 on screen 7.6-8.3 s (the loop: in view 7.5-8.2 s); marked at 8.0 s.
+    const scoring::MetricValues m = watched({{0.0, EventKind::LesionOffScreen, "lesion 1"},
+                                             {0.0, EventKind::LesionOffScreen, "lesion 2"},
+                                             {7.6, EventKind::LesionOnScreen, "lesion 2"},
+                                             {8.3, EventKind::LesionOffScreen, "lesion 2"}});
+    EXPECT_EQ(m.at("lesions_from_renderer"), 1.0);
+    EXPECT_EQ(m.at("lesions_detected"), 1.0);
+    EXPECT_NEAR(m.at("time_to_detection"), 0.4, 1e-12) << "from its first coming on screen";
+    EXPECT_EQ(m.at("false_lesion_marks"), 1.0) << "the mark at 8.5 s found nothing on screen";
+}
+
+TEST(Metrics, AMarkOfALesionAFoldHidFromTheRendererIsFalse)
+{
+    // The loop says lesion 2 was in view when marked at 8.0 s; the renderer
+    // never showed it (a fold in front): no detection, two false marks.
+    const scoring::MetricValues m = watched(
+        {{0.0, EventKind::LesionOffScreen, "lesion 1"}, {0.0, EventKind::LesionOffScreen, "lesion 2"}});
+    EXPECT_EQ(m.at("lesions_from_renderer"), 1.0);
+    EXPECT_EQ(m.at("lesions_detected"), 0.0);
+    EXPECT_EQ(m.at("lesions_missed"), 2.0);
+    EXPECT_EQ(m.at("false_lesion_marks"), 2.0);
+    EXPECT_FALSE(m.contains("time_to_detection"));
+    // Without the renderer's events the loop's signal counts it.
+    EXPECT_EQ(scoring::computeMetrics(handMade(), {}).at("lesions_from_renderer"), 0.0);
+}
+
+TEST(Metrics, TheRenderersSightingCountsWithinOneUpdateOfTheMark)
+{
+    // Lesion 1 on screen 8.55-9.2 s: the mark at 8.5 s (naming none: the
+    // loop saw nothing yet) finds it, 0.05 s before its first update shows it.
+    scoring::MetricValues m = watched({{0.0, EventKind::LesionOffScreen, "lesion 1"},
+                                       {0.0, EventKind::LesionOffScreen, "lesion 2"},
+                                       {8.55, EventKind::LesionOnScreen, "lesion 1"},
+                                       {9.2, EventKind::LesionOffScreen, "lesion 1"}});
+    EXPECT_EQ(m.at("lesions_detected"), 1.0);
+    EXPECT_EQ(m.at("time_to_detection"), 0.0) << "marked before it came on screen: no negative time";
+    EXPECT_EQ(m.at("false_lesion_marks"), 1.0) << "the mark at 8.0 s: lesion 2 was never on screen";
+    // 0.15 s after the mark is beyond one update (0.1 s): no lesion found.
+    m = watched({{0.0, EventKind::LesionOffScreen, "lesion 1"},
+                 {0.0, EventKind::LesionOffScreen, "lesion 2"},
+                 {8.65, EventKind::LesionOnScreen, "lesion 1"}});
+    EXPECT_EQ(m.at("lesions_detected"), 0.0);
+    EXPECT_EQ(m.at("false_lesion_marks"), 2.0);
+}
+
+TEST(Metrics, TwoLesionsOnScreenAtOneMarkAreFoundByTwoMarks)
+{
+    procedure::Recording r = handMade();
+    std::erase_if(r.events, [](const auto& e) { return e.kind == EventKind::LesionMarked; });
+    r.mergeEvents({{0.0, EventKind::LesionOffScreen, "lesion 1"},
+                   {0.0, EventKind::LesionOffScreen, "lesion 2"},
+                   {2.0, EventKind::LesionOnScreen, "lesion 1"},
+                   {2.0, EventKind::LesionOnScreen, "lesion 2"},
+                   {2.5, EventKind::LesionMarked, "lesion 2"},
+                   {2.7, EventKind::LesionMarked, "lesion 2"},
+                   {2.9, EventKind::LesionMarked, "lesion 2"}});
+    scoring::ScoringContext context;
+    context.lesionsPresent = 2;
+    const scoring::MetricValues m = scoring::computeMetrics(r, context);
+    // The first mark finds the lesion it names, the second the other one on
+    // screen, the third a lesion already found: not false.
+    EXPECT_EQ(m.at("lesions_detected"), 2.0);
+    EXPECT_NEAR(m.at("time_to_detection"), (0.5 + 0.7) / 2.0, 1e-12);
+    EXPECT_EQ(m.at("false_lesion_marks"), 0.0);
+}
+
+TEST(Recording, MergedEventsStayInTimeOrderWithTheRecordersFirstAtEqualTimes)
+{
+    procedure::Recording r;
+    r.events = {{1.0, EventKind::LensWash, ""}, {2.0, EventKind::LesionMarked, "lesion 1"}};
+    r.mergeEvents(
+        {{0.5, EventKind::LesionOffScreen, "lesion 1"}, {2.0, EventKind::LesionOnScreen, "lesion 1"}});
+    ASSERT_EQ(r.events.size(), 4U);
+    EXPECT_EQ(r.events[0].kind, EventKind::LesionOffScreen);
+    EXPECT_EQ(r.events[1].kind, EventKind::LensWash);
+    EXPECT_EQ(r.events[2].kind, EventKind::LesionMarked);
+    EXPECT_EQ(r.events[3].kind, EventKind::LesionOnScreen);
 }
 
 TEST(Benchmarks, MeanSdLimitsAndProficiency)

@@ -259,11 +259,12 @@ void ProcedureScreen::finish()
     m_status->setText(tr("Scoring and storing the session…"));
     try {
         scoring::ScoringContext scoringContext;
-        scoringContext.colonLength = m_scene->settings.recorder.colonLength;
+        scoringContext.colonLength = loop->colonLength();
         scoringContext.lesionsPresent = m_scene->lesionsPresent;
         scoringContext.mucosaSeen = m_runner->mucosaSeen();
-        const db::SessionResult result = cli::completeStoredSession(
-            m_context.records, m_context.actor, m_session, m_task.id, *loop, scoringContext);
+        const db::SessionResult result =
+            cli::completeStoredSession(m_context.records, m_context.actor, m_session, m_task.id, *loop,
+                                       m_runner->recording(), scoringContext);
         Q_EMIT completed(m_session, result);
     } catch (const std::exception& error) {
         const QString why =

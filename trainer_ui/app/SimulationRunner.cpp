@@ -53,6 +53,14 @@ std::optional<double> SimulationRunner::mucosaSeen()
     return m_coverage->finalFraction();
 }
 
+procedure::Recording SimulationRunner::recording()
+{
+    if (!finished() || !m_loop) {
+        throw std::logic_error("SimulationRunner::recording: the procedure has not finished");
+    }
+    return cli::recordingSeenBy(*m_loop, m_coverage.get());
+}
+
 void SimulationRunner::publish(Snapshot::State state, double physicsRate)
 {
     Snapshot& out = m_snapshots.back();
@@ -90,7 +98,7 @@ void SimulationRunner::run(std::stop_token stop)
     }
     procedure::ProcedureLoop& loop = *m_loop;
     if (m_options.coverage) {
-        m_coverage = cli::tryCoverage(m_scene->anatomy, std::cerr);
+        m_coverage = cli::tryCoverage(m_scene->anatomy, loop, std::cerr);
     }
     auto* hdc = dynamic_cast<devices::HdcOperator*>(m_driver.get());
     render::LensSoiling lens{render::RenderParameters{}};

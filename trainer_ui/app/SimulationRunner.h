@@ -92,6 +92,10 @@ public:
     /// After finished(): the session's coverage, 0..1, every hand-over drawn;
     /// none when it was not measured (RunnerOptions::coverage) or the renderer cannot run here.
     [[nodiscard]] std::optional<double> mucosaSeen();
+    /// Once finished: the loop's recording with the renderer's lesion
+    /// events merged in (cli::recordingSeenBy); waits for the coverage
+    /// thread like mucosaSeen. Throws std::logic_error before.
+    [[nodiscard]] procedure::Recording recording();
 
 private:
     void run(std::stop_token stop);

@@ -89,15 +89,8 @@ int runBenchmarks(std::span<char* const> args)
                 const QByteArray blob = open.records->sessionRecording(actor, s.id);
                 const procedure::Recording recording =
                     db::decodeRecording(std::vector<char>(blob.begin(), blob.end()));
-                scoring::ScoringContext context;
-                if (const auto it = s.metrics.find("lesions_present"); it != s.metrics.end()) {
-                    context.lesionsPresent = static_cast<int>(it->second);
-                }
-                // The renderer's coverage is not in the recording: the stored figure stands.
-                if (const auto it = s.metrics.find("mucosa_from_renderer");
-                    it != s.metrics.end() && it->second > 0.5) {
-                    context.mucosaSeen = s.metrics.at("mucosa_visualised");
-                }
+                // Lesions present, the colon's length and the renderer's coverage as stored.
+                const scoring::ScoringContext context = scoring::storedContext(s.metrics);
                 const scoring::MetricValues values = scoring::computeMetrics(recording, context);
                 auto scores = scoring::scoreSession(values, set);
                 scores["benchmark_met"] = set.met(values) ? 1.0 : 0.0;

@@ -156,7 +156,7 @@ int runDemo(std::span<char* const> args)
     const auto driver = procedure::makeOperator("expert");
     const auto started = std::chrono::steady_clock::now();
     const auto steps = static_cast<long>(maxTime / loop.trace().loopStep);
-    const std::unique_ptr<SessionCoverage> coverage = tryCoverage(anatomy, log);
+    const std::unique_ptr<SessionCoverage> coverage = tryCoverage(anatomy, loop, log);
     for (long s = 0; s < steps && !driver->finished(); ++s) {
         loop.step(driver->next(loop));
         if (coverage) {
@@ -168,13 +168,13 @@ int runDemo(std::span<char* const> args)
 
     // 3. scored into the records
     scoring::ScoringContext context;
-    context.colonLength = settings.recorder.colonLength;
+    context.colonLength = loop.colonLength();
     context.lesionsPresent = static_cast<int>(theCase.lesions.size());
     if (coverage) {
         context.mucosaSeen = coverage->finalFraction();
     }
-    const db::SessionResult result =
-        completeStoredSession(*open.records, student, session, kDemoTask, loop, context);
+    const db::SessionResult result = completeStoredSession(*open.records, student, session, kDemoTask, loop,
+                                                           recordingSeenBy(loop, coverage.get()), context);
     log << "3. session " << session << " of " << kDemoStudent << " stored with " << result.metrics.size()
         << " metrics, task " << kDemoTask << ", "
         << (result.scores.contains("composite")

@@ -182,7 +182,7 @@ int runProcedure(std::span<char* const> args)
     // scripted and replayed input runs as fast as the loop can.
     const bool wallClock = *operatorName == "gamepad";
     // The renderer's coverage of the wall, 10 times a simulated second: % mucosa visualised.
-    const std::unique_ptr<SessionCoverage> coverage = tryCoverage(anatomy, std::cerr);
+    const std::unique_ptr<SessionCoverage> coverage = tryCoverage(anatomy, loop, std::cerr);
     const auto start = std::chrono::steady_clock::now();
     for (long s = 0; s < steps && !driver->finished(); ++s) {
         if (wallClock) {
@@ -198,26 +198,34 @@ int runProcedure(std::span<char* const> args)
             coverage->observe(loop);
         }
     }
+    // The loop's recording with the renderer's lesion events (on / off screen) merged in.
+    const procedure::Recording recording = recordingSeenBy(loop, coverage.get());
     const std::filesystem::path dir(*out);
     procedure::writeTrace(dir / "session.trace", loop.trace());
-    loop.recording().writeCsv(dir / "samples.csv", dir / "events.csv");
-    std::ofstream(dir / "recording.txt") << loop.recording().canonicalText();
+    recording.writeCsv(dir / "samples.csv", dir / "events.csv");
+    std::ofstream(dir / "recording.txt") << recording.canonicalText();
 
-    nlohmann::json summary = summarise(loop.recording(), loop.time());
+    nlohmann::json summary = summarise(recording, loop.time());
     const std::optional<double> mucosaSeen =
         coverage ? std::optional<double>(coverage->finalFraction()) : std::nullopt;
     summary["mucosa_visualised"] = mucosaSeen ? nlohmann::json(*mucosaSeen) : nlohmann::json();
     if (coverage) {
         summary["coverage"] = {{"draws", coverage->draws()}, {"draw_seconds", coverage->drawSeconds()}};
+        nlohmann::json bySegment = nlohmann::json::object();
+        const auto fractions = coverage->finalBySegment();
+        for (size_t k = 0; k < fractions.size(); ++k) {
+            bySegment[std::string(geometry::segmentName(static_cast<geometry::Segment>(k)))] = fractions[k];
+        }
+        summary["mucosa_visualised_by_segment"] = bySegment;
     }
     std::string storedLine;
     if (user) {
         scoring::ScoringContext context;
-        context.colonLength = settings.recorder.colonLength;
+        context.colonLength = loop.colonLength();
         context.lesionsPresent = lesionsPresent;
         context.mucosaSeen = mucosaSeen;
         const db::SessionResult result =
-            completeStoredSession(*records.records, actor, session, task, loop, context);
+            completeStoredSession(*records.records, actor, session, task, loop, recording, context);
         summary["session"] = session;
         summary["task"] = task;
         summary["scores"] = result.scores;

@@ -36,13 +36,13 @@ std::string checkTask(const std::string& id)
     return id;
 }
 
-db::SessionResult storedSession(const procedure::ProcedureLoop& loop)
+db::SessionResult storedSession(const procedure::ProcedureLoop& loop, const procedure::Recording& recording)
 {
     db::SessionResult result;
     result.trace = bytes(db::encodeStoredTrace(loop.trace()));
-    result.recording = bytes(db::encodeRecording(loop.recording()));
+    result.recording = bytes(db::encodeRecording(recording));
     result.duration = loop.time();
-    for (const auto& e : loop.recording().events) {
+    for (const auto& e : recording.events) {
         result.events.push_back({e.time, std::string(procedure::eventName(e.kind)), e.detail});
     }
     return result;
@@ -50,10 +50,11 @@ db::SessionResult storedSession(const procedure::ProcedureLoop& loop)
 
 db::SessionResult completeStoredSession(db::Records& records, const db::Actor& actor, qint64 session,
                                         const std::string& task, const procedure::ProcedureLoop& loop,
+                                        const procedure::Recording& recording,
                                         const scoring::ScoringContext& context)
 {
-    db::SessionResult result = storedSession(loop);
-    scoreInto(records, actor, task, scoring::computeMetrics(loop.recording(), context), result);
+    db::SessionResult result = storedSession(loop, recording);
+    scoreInto(records, actor, task, scoring::computeMetrics(recording, context), result);
     records.completeSession(actor, session, result);
     return result;
 }

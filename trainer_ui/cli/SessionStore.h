@@ -19,15 +19,19 @@ namespace colonosim::cli {
 /// UsageError naming the value and the runnable tasks otherwise.
 std::string checkTask(const std::string& id);
 
-/// A finished procedure as the records store it: the compressed input trace,
-/// the encoded recording, the simulated duration and the events (scores,
-/// metrics and progress are added by scoreInto, RecordsAccess.h).
-[[nodiscard]] db::SessionResult storedSession(const procedure::ProcedureLoop& loop);
+/// A finished procedure as the records store it: `loop`'s compressed input
+/// trace and simulated duration, and `recording` (the loop's, with the
+/// renderer's lesion events merged in when it watched: recordingSeenBy,
+/// SessionCoverage.h), encoded and as events (scores, metrics and progress
+/// are added by scoreInto, RecordsAccess.h).
+[[nodiscard]] db::SessionResult storedSession(const procedure::ProcedureLoop& loop,
+                                              const procedure::Recording& recording);
 
-/// Scores `loop`'s recording for `task` and completes `session` of `actor`.
-/// Returns what was stored (metrics, scores, progress).
+/// Scores `recording` of `loop` for `task` and completes `session` of
+/// `actor`. Returns what was stored (metrics, scores, progress).
 db::SessionResult completeStoredSession(db::Records& records, const db::Actor& actor, qint64 session,
                                         const std::string& task, const procedure::ProcedureLoop& loop,
+                                        const procedure::Recording& recording,
                                         const scoring::ScoringContext& context);
 
 }  // namespace colonosim::cli
