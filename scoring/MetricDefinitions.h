@@ -12,7 +12,8 @@ namespace colonosim::scoring {
 enum class Better { Higher, Lower, Neither };
 
 struct MetricDefinition {
-    std::string_view name;
+    std::string_view name;   ///< identifier: records, CSV, xAPI, benchmark sets
+    std::string_view label;  ///< as a person reads it: the trainer's tables, charts and the PDF
     std::string_view unit;
     Better better;
     std::string_view help;

@@ -51,6 +51,11 @@ void HdcController::tick(double now)
     }
     m_lastTick = now;
     ++m_stats.ticks;
+    const bool stopLatches = (m_device.emergencyStopPressed() || m_emergencyRequest.load()) &&
+                             m_servo.state() != ServoState::EmergencyStop;
+    if (stopLatches) {
+        m_stats.stopFromForce = m_servo.output().force;
+    }
     if (m_device.emergencyStopPressed() || m_emergencyRequest.load()) {
         m_servo.emergencyStop();
     }
@@ -101,6 +106,9 @@ void HdcController::tick(double now)
     const HandleCommand& out = m_servo.tick(now);
     m_stats.maxOutputStep = std::max(m_stats.maxOutputStep, std::abs(out.force - before));
     m_device.apply(out, m_servo.parameters().servoPeriod);
+    if (stopLatches) {
+        m_stats.stopToForce = out.force;
+    }
 }
 
 void HdcController::run(std::stop_token stop, double duration)

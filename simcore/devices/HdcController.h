@@ -29,7 +29,12 @@ struct ServoStatistics {
     int loadsReceived = 0;
     int messagesRefused = 0;
     int reconnects = 0;
-    double maxOutputStep = 0.0;  ///< N, largest change of the applied force in one tick
+    double maxOutputStep =
+        0.0;  ///< N, largest change of the applied force in one tick, the stop's drop aside
+    /// N: the force applied when an emergency stop latched, and the force
+    /// that tick applied (zero: no ramp).
+    double stopFromForce = 0.0;
+    double stopToForce = 0.0;
 };
 
 class HdcController {

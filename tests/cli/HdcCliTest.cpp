@@ -3,10 +3,14 @@
 // connects with the simulated device; and their refusals of bad arguments.
 #include "RunColonosim.h"
 
+#include "simcore/devices/HdcServer.h"
+
 #include <nlohmann/json.hpp>
 
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -64,6 +68,48 @@ TEST(HdcCli, TheSimulatedDeviceDrivesASessionThroughTheHdcProcess)
     std::stringstream text;
     text << events.rdbuf();
     EXPECT_NE(text.str().find("device_connected,simulated"), std::string::npos) << text.str();
+}
+
+// SIGINT to colonosim-hdc is an emergency stop. The test plays the simulator
+// (an HdcServer answering every input frame with an 8 N load); the HDC ramps
+// the force up at its rate limit (5 N a tick), and on the signal drops it to
+// zero at once (from the whole 8 N to zero on the tick the stop latches, no
+// ramp), tells the simulator (STATUS), and exits cleanly with its statistics.
+TEST(HdcCli, SigintIsAnEmergencyStopThatDropsTheForceToZeroAtOnce)
+{
+    const colonosim::devices::HapticParameters parameters;
+    colonosim::devices::HdcServer server(0, parameters);
+    std::atomic<bool> exited{false};
+    colonosim::testing::Result hdc;
+    std::thread process([&] {
+        // timeout sends SIGINT after 3 s; --preserve-status exits with the HDC's status.
+        hdc = colonosim::testing::runCommand("timeout --preserve-status -s INT 3 " COLONOSIM_HDC_EXECUTABLE,
+                                             "--device simulated --connect 127.0.0.1:" +
+                                                 std::to_string(server.port()) + " --duration 60 --json");
+        exited = true;
+    });
+    constexpr double kLoad = 8.0;  // N, resisting insertion
+    int answered = 0;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+    while (!exited.load() && std::chrono::steady_clock::now() < deadline) {
+        if (const auto frame = server.waitForInput(0.01)) {
+            server.publishLoad({kLoad, 0.0}, frame->time);
+            ++answered;
+        }
+    }
+    process.join();
+    ASSERT_EQ(hdc.status, 0) << hdc.output;
+    EXPECT_NE(hdc.output.find("colonosim-hdc: emergency stop"), std::string::npos) << hdc.output;
+    EXPECT_GT(answered, 500) << "about 2 s of frames answered before the signal";
+    EXPECT_TRUE(server.emergencyStop()) << "the HDC reported its emergency stop to the simulator";
+    const auto stats = nlohmann::json::parse(hdc.output.substr(hdc.output.find('{')));
+    EXPECT_EQ(stats["final_state"], "emergency stop");
+    EXPECT_GT(stats["loads_received"].get<int>(), 500);
+    EXPECT_EQ(stats["final_force_N"].get<double>(), 0.0);
+    EXPECT_NEAR(stats["emergency_stop_from_N"].get<double>(), kLoad, 1e-6)
+        << "the stop latched while the whole load was applied";
+    EXPECT_EQ(stats["emergency_stop_to_N"].get<double>(), 0.0) << "and that same tick applied zero";
+    EXPECT_LE(stats["max_force_step_N"].get<double>(), 5.0 + 1e-9) << "the ramp up: at most 5 N a tick";
 }
 
 }  // namespace

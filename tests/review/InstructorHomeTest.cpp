@@ -88,7 +88,7 @@ TEST_F(Instructor, SeesALearningCurveWithTheBenchmarkAndTheCusumCharts)
 {
     tabs->setCurrentIndex(1);
     choose(child<QComboBox>(home, "curveTrainee"), QStringLiteral("ada"));
-    choose(child<QComboBox>(home, "curveMetric"), QStringLiteral("max_insertion"));
+    choose(child<QComboBox>(home, "curveMetric"), QStringLiteral("Deepest insertion"));
     open(1, "instructor-2-learning-curves");
     QChart* metric = child<QChartView>(home, "metricChart")->chart();
     int points = -1;
@@ -165,7 +165,9 @@ TEST_F(Instructor, ComparesTwoSessions)
     for (int r = 0; r < table->model()->rowCount(); ++r) {
         const QString better = table->model()->index(r, 4).data().toString();
         verdicts += better == QStringLiteral("A") || better == QStringLiteral("B") ? 1 : 0;
-        if (table->model()->index(r, 0).data().toString() == QStringLiteral("total_time")) {
+        const QString metric = table->model()->index(r, 0).data().toString();
+        EXPECT_FALSE(metric.contains(u'_')) << "a label, not an identifier: " << metric.toStdString();
+        if (metric == QStringLiteral("Total time")) {
             EXPECT_EQ(better, QStringLiteral("no better direction"));
         }
     }

@@ -7,6 +7,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cctype>
+#include <set>
+#include <string_view>
+
 namespace {
 
 using namespace colonosim;
@@ -284,6 +288,24 @@ TEST(DomainScores, MapProficiencyToTheScales)
     EXPECT_DOUBLE_EQ(worst.at("gages_clear_field"), 1.0);
     EXPECT_DOUBLE_EQ(worst.at("dops_tip_control"), 1.0);
     EXPECT_DOUBLE_EQ(worst.at("composite"), 0.0);
+}
+
+}  // namespace
+
+namespace {
+
+// Every metric reads as words in the trainer (no identifiers): a label that
+// starts with a capital, has no underscore, and is not shared.
+TEST(MetricDefinitions, EveryMetricHasItsOwnLabelForPeople)
+{
+    std::set<std::string_view> seen;
+    for (const scoring::MetricDefinition& d : scoring::metricDefinitions()) {
+        ASSERT_FALSE(d.label.empty()) << d.name;
+        EXPECT_TRUE(std::isupper(static_cast<unsigned char>(d.label.front()))) << d.label;
+        EXPECT_EQ(d.label.find('_'), std::string_view::npos) << d.label;
+        EXPECT_TRUE(seen.insert(d.label).second) << d.label << " labels two metrics";
+    }
+    EXPECT_EQ(scoring::findMetric("loops_n")->label, "N loops");
 }
 
 }  // namespace

@@ -29,14 +29,10 @@ QString valueText(double value, std::string_view unit)
     return text;
 }
 
-/// A metric's name as a person reads it: "max_handle_force" -> "Max handle force".
-QString metricLabel(std::string_view name)
+/// A metric as a person reads it: its declared label ("Peak handle force").
+QString metricLabel(const scoring::MetricDefinition& definition)
 {
-    QString label = QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size())).replace(u'_', u' ');
-    if (!label.isEmpty()) {
-        label[0] = label[0].toUpper();
-    }
-    return label;
+    return QString::fromUtf8(definition.label.data(), static_cast<qsizetype>(definition.label.size()));
 }
 
 QTableWidgetItem* cell(const QString& text)
@@ -122,7 +118,7 @@ ResultsScreen::ResultsScreen(AppContext& context, qint64 session, const curricul
         m_table->insertRow(row);
         const QString help =
             QString::fromUtf8(definition.help.data(), static_cast<qsizetype>(definition.help.size()));
-        QTableWidgetItem* metric = cell(metricLabel(definition.name));
+        QTableWidgetItem* metric = cell(metricLabel(definition));
         metric->setToolTip(help);
         m_table->setItem(row, 0, metric);
         m_table->setItem(row, 1, cell(valueText(value->second, definition.unit)));
@@ -144,7 +140,7 @@ ResultsScreen::ResultsScreen(AppContext& context, qint64 session, const curricul
         m_table->setItem(row, 3, verdict);
         if (!pass) {
             improvements << QStringLiteral("<li><b>%1</b> (%2): %3</li>")
-                                .arg(metricLabel(definition.name).toHtmlEscaped(), help.toHtmlEscaped(),
+                                .arg(metricLabel(definition).toHtmlEscaped(), help.toHtmlEscaped(),
                                      adviceFor(definition.name).toHtmlEscaped());
         }
     }

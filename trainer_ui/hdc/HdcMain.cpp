@@ -133,6 +133,9 @@ int run(std::span<char* const> args)
     out["connections"] = s.reconnects;
     out["max_force_step_N"] = s.maxOutputStep;
     out["final_state"] = devices::toString(hdc.servo().state());
+    out["final_force_N"] = simulated.appliedForce();
+    out["emergency_stop_from_N"] = s.stopFromForce;
+    out["emergency_stop_to_N"] = s.stopToForce;
     out["last_refusal"] = hdc.lastRefusal();
     if (line.has("--json")) {
         std::cout << out.dump(2) << '\n';

@@ -123,11 +123,12 @@ void ComparisonPage::redraw()
     const QColor better(200, 235, 205);
     for (const scoring::MetricDefinition& d : scoring::metricDefinitions()) {
         const std::string name(d.name);
-        QList<QStandardItem*> row{new QStandardItem(QString::fromStdString(name)),
-                                  new QStandardItem(unitText(d.unit)),
-                                  new QStandardItem(value(first.metrics, name)),
-                                  new QStandardItem(value(second.metrics, name)), new QStandardItem};
-        row[0]->setToolTip(QString::fromUtf8(d.help.data(), static_cast<qsizetype>(d.help.size())));
+        QList<QStandardItem*> row{
+            new QStandardItem(QString::fromUtf8(d.label.data(), static_cast<qsizetype>(d.label.size()))),
+            new QStandardItem(unitText(d.unit)), new QStandardItem(value(first.metrics, name)),
+            new QStandardItem(value(second.metrics, name)), new QStandardItem};
+        row[0]->setToolTip(QString::fromStdString(name) + QStringLiteral(": ") +
+                           QString::fromUtf8(d.help.data(), static_cast<qsizetype>(d.help.size())));
         const auto x = first.metrics.find(name);
         const auto y = second.metrics.find(name);
         QString verdict;

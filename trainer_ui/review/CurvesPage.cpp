@@ -57,7 +57,7 @@ CurvesPage::CurvesPage(AppContext& context, TraineeSessions& sessions, QWidget* 
     m_caption->setWordWrap(true);
     for (const scoring::MetricDefinition& d : scoring::metricDefinitions()) {
         const QString name = QString::fromUtf8(d.name.data(), static_cast<qsizetype>(d.name.size()));
-        m_metric->addItem(name, name);
+        m_metric->addItem(QString::fromUtf8(d.label.data(), static_cast<qsizetype>(d.label.size())), name);
         m_metric->setItemData(m_metric->count() - 1,
                               QString::fromUtf8(d.help.data(), static_cast<qsizetype>(d.help.size())),
                               Qt::ToolTipRole);
