@@ -5,11 +5,14 @@
 // and replaying the session (seeking lands exactly on the recording); then
 // the three roles in turn on one database: the student's session, seen and
 // replayed by the instructor of the student's cohort and reported by the
-// administrator, each logging in through the window. A screenshot of every
-// screen goes to the screenshots folder of the build.
+// administrator, each logging in through the window; the haptic device and
+// the gamepad chosen in the brief, and a replay at 1x and 4x. A screenshot
+// of every screen goes to the screenshots folder of the build.
 #include "db/Database.h"
 #include "db/Records.h"
 #include "scoring/Benchmarks.h"
+#include "simcore/devices/HapticDevice.h"
+#include "simcore/devices/HdcController.h"
 #include "tests/db/TempDir.h"
 #include "trainer_ui/app/CurriculumMap.h"
 #include "trainer_ui/app/EndoscopeViewWidget.h"
@@ -28,8 +31,10 @@
 #include <QElapsedTimer>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QSpinBox>
 #include <QTabWidget>
 #include <QTableView>
 #include <QTableWidget>
@@ -43,6 +48,8 @@
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <thread>
+#include <unistd.h>
 
 namespace {
 
@@ -528,6 +535,118 @@ TEST(Trainer, TheInstructorReplaysTheStudentsSessionAndTheAdministratorReportsIt
         << "the student's session is reported";
     click(window, "logOut");
     EXPECT_EQ(screenName(window), "loginScreen");
+}
+
+// The brief's other input devices, chosen as a person chooses them. The
+// haptic device: the procedure waits on the port the brief names, and a
+// Haptic Device Controller with the simulated device (a hand pushing in at
+// 2 cm/s) connects to it and drives the session; the stored session names
+// the device. The gamepad, where none is connected (as under Xvfb): a
+// sentence saying so, and no session begun. Then the session's replay at 1x
+// and at 4x: four times the simulated time per wall second, give or take a
+// loaded machine.
+TEST(Trainer, TheHapticDeviceDrivesASessionChosenInTheBriefAndItsReplayRunsFourTimesFaster)
+{
+    StudentRecords fixture;
+    app::MainWindow window(fixture.database, fixture.records, fixture.dir.path());
+    window.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+    logIn(window, "ada", "ada-password-1");
+    ASSERT_EQ(screenName(window), "studentHome");
+    const db::Actor ada = fixture.records.authenticate("ada", "ada-password-1");
+
+    // The gamepad.
+    click(window, "openBrief");
+    ASSERT_EQ(screenName(window), "taskBrief");
+    {
+        QWidget& brief = *window.currentScreen();
+        auto* choice = child<QComboBox>(brief, "driverChoice");
+        choice->setCurrentIndex(choice->findData(static_cast<int>(app::Driver::Gamepad)));
+        EXPECT_FALSE(child<QSpinBox>(brief, "hapticPort")->isEnabled()) << "the port is the haptic device's";
+        click(brief, "startProcedure");
+    }
+    if (auto* procedure = qobject_cast<app::ProcedureScreen*>(window.currentScreen())) {
+        // A gamepad is connected to this machine: it drives the session.
+        procedure->endAndStore();
+        ASSERT_SOON(screenName(window) == QStringLiteral("resultsScreen"));
+        EXPECT_TRUE(fixture.records.sessions(ada, "ada").back().device.starts_with("gamepad:"));
+        click(window, "backToCurriculum");
+    } else {
+        auto* box = window.findChild<QMessageBox*>(QStringLiteral("errorMessage"));
+        ASSERT_NE(box, nullptr) << "the missing gamepad is said";
+        EXPECT_TRUE(box->text().contains(QStringLiteral("no game controller is connected")))
+            << box->text().toStdString();
+        screenshot(*box, "gamepad-missing");
+        box->accept();
+        EXPECT_EQ(screenName(window), "taskBrief") << "the brief stays, with its choices";
+        EXPECT_TRUE(fixture.records.sessions(ada, "ada").empty());
+        click(window, "backToCurriculum");
+    }
+
+    // The haptic device.
+    ASSERT_EQ(screenName(window), "studentHome");
+    click(window, "openBrief");
+    ASSERT_EQ(screenName(window), "taskBrief");
+    const int port = 20000 + static_cast<int>(::getpid() % 20000);
+    QWidget& brief = *window.currentScreen();
+    auto* choice = child<QComboBox>(brief, "driverChoice");
+    choice->setCurrentIndex(choice->findData(static_cast<int>(app::Driver::Haptic)));
+    EXPECT_TRUE(child<QSpinBox>(brief, "hapticPort")->isEnabled());
+    child<QSpinBox>(brief, "hapticPort")->setValue(port);
+    constexpr double kRunLength = 4.0;  // s simulated
+    child<QDoubleSpinBox>(brief, "timeLimit")->setValue(kRunLength);
+    click(brief, "startProcedure");
+    auto* procedure = qobject_cast<app::ProcedureScreen*>(window.currentScreen());
+    ASSERT_NE(procedure, nullptr);
+    devices::SimulatedDevice device([](double t) {
+        procedure::InputSample s;
+        s.insertion = 0.02 * t;
+        return s;
+    });
+    devices::HdcController hdc(device, devices::HapticParameters{}, "127.0.0.1", port);
+    std::jthread servo([&](std::stop_token stop) { hdc.run(stop, 120.0); });
+    ASSERT_SOON(hdc.everConnected());
+    ASSERT_SOON(procedure->shownInsertion() > 0.01);
+    screenshot(window, "procedure-haptic");
+    ASSERT_SOON(screenName(window) == QStringLiteral("resultsScreen"));
+    servo.request_stop();
+    servo.join();
+    EXPECT_GT(hdc.statistics().loadsReceived, 1000) << "the handle force came back to the device";
+    const std::vector<db::SessionRow> stored = fixture.records.sessions(ada, "ada");
+    ASSERT_FALSE(stored.empty());
+    EXPECT_EQ(stored.back().device, "hdc:" + std::to_string(port));
+    EXPECT_GT(stored.back().metrics.at("max_insertion"), 0.03) << "the hand pushed the scope in";
+
+    // Its replay at 1x, then at 4x.
+    click(window, "replayButton");
+    auto* replay = qobject_cast<app::ReplayScreen*>(window.currentScreen());
+    ASSERT_NE(replay, nullptr);
+    ASSERT_SOON(replay->shown()->state == app::Snapshot::State::Paused);
+    bool connected = false;
+    for (const auto& e : replay->recording().events) {
+        connected = connected || (e.kind == procedure::EventKind::DeviceConnected && e.detail == "simulated");
+    }
+    EXPECT_TRUE(connected) << "the recording says which device drove the session";
+    auto played = [&](double speed) {
+        auto* box = child<QComboBox>(window, "replaySpeed");
+        box->setCurrentIndex(box->findData(speed));
+        const double from = replay->shown()->frame.time;
+        QElapsedTimer wall;
+        wall.start();
+        click(window, "replayPlay");
+        QTest::qWait(600);
+        click(window, "replayPause");
+        const double seconds = static_cast<double>(wall.elapsed()) / 1000.0;
+        EXPECT_TRUE(waitUntil([&] { return replay->shown()->state == app::Snapshot::State::Paused; }));
+        return (replay->shown()->frame.time - from) / seconds;
+    };
+    const double normal = played(1.0);
+    const double fast = played(4.0);
+    std::cout << "replay: " << normal << " s simulated per wall second at 1x, " << fast << " at 4x\n";
+    EXPECT_GT(normal, 0.3);
+    EXPECT_LT(normal, 1.2) << "1x never runs ahead of the wall clock";
+    EXPECT_GT(fast, 2.0 * normal) << "4x: several times faster than 1x";
+    EXPECT_LT(replay->shown()->frame.time, kRunLength);
 }
 
 TEST(Trainer, TheShapeViewIsShownOnlyWhenTheTaskAllowsIt)
