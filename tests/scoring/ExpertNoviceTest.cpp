@@ -37,6 +37,7 @@ scoring::MetricValues runOnce(std::uint64_t seed, const std::string& operatorNam
         loop.step(driver->next(loop));
     }
     scoring::ScoringContext context;
+    context.colonLength = loop.colonLength();
     context.lesionsPresent = static_cast<int>(patient.lesions.size());
     return scoring::computeMetrics(loop.recording(), context);
 }
