@@ -1,8 +1,8 @@
 // Scoring of recorded sessions: on ten generated patients (seeds 1-10), the
 // scripted expert's composite score is above the scripted novice's. Each run
-// is short (kRunTime of simulated time; the simulated expert does not yet
-// reach the cecum), so what is scored is the insertion phase: forces, loops,
-// view, discomfort, pace. Benchmarks come from the expert on three other
+// is 10 s of simulated time (a whole run takes the expert 60-120 s, several
+// minutes of a core each), so what is scored is the first part of the
+// insertion: forces, loops, view, discomfort, pace, the wall seen. Benchmarks come from the expert on three other
 // patients (seeds 101-103), so no run is scored against itself.
 #include "case_generator/CaseGenerator.h"
 #include "case_generator/SceneSpec.h"
@@ -20,7 +20,7 @@ namespace {
 
 using namespace colonosim;
 
-constexpr double kRunTime = 2.5;  ///< s simulated per run
+constexpr double kRunTime = 10.0;  ///< s simulated per run
 
 scoring::MetricValues runOnce(std::uint64_t seed, const std::string& operatorName)
 {
