@@ -28,12 +28,15 @@ void setCamera(const GlFunctions& gl, const ShaderProgram& program, const Camera
 EndoscopeView::EndoscopeView(const GlFunctions& gl, const WallSurface& surface,
                              const RenderParameters& parameters)
     : m_gl(gl), m_parameters(parameters), m_triangles(surface.rest.triangles), m_chart(surface.chart),
-      m_restVertices(surface.rest.vertices)
+      m_restVertices(surface.rest.vertices), m_up(surface.up.normalized())
 {
     m_parameters.validate();
+    // The residual fluid's shading is compiled in only where the wall has fluid (Shaders.h).
+    const bool fluid = std::any_of(surface.fluidDepth.begin(), surface.fluidDepth.end(),
+                                   [](float depth) { return depth > 0.0F; });
     m_wall = std::make_unique<ShaderProgram>(
         gl, std::initializer_list<const char*>{shaders::kFisheye, shaders::kWallVertex},
-        std::initializer_list<const char*>{shaders::kWallFragment});
+        std::initializer_list<const char*>{fluid ? "#define RESIDUAL_FLUID\n" : "", shaders::kWallFragment});
     m_lens = std::make_unique<ShaderProgram>(
         gl, std::initializer_list<const char*>{shaders::kScreenVertex},
         std::initializer_list<const char*>{shaders::kNoise, shaders::kLensFragment});
@@ -55,22 +58,26 @@ EndoscopeView::EndoscopeView(const GlFunctions& gl, const WallSurface& surface,
     gl.EnableVertexAttribArray(0);
     gl.EnableVertexAttribArray(1);
 
-    std::vector<float> fixed(numVertices * 7);
+    constexpr size_t kFixed = 8;  // chart (3), finding (4), fluid depth (1)
+    std::vector<float> fixed(numVertices * kFixed);
     for (size_t i = 0; i < numVertices; ++i) {
         std::copy_n(surface.chart.begin() + static_cast<long>(3 * i), 3,
-                    fixed.begin() + static_cast<long>(7 * i));
+                    fixed.begin() + static_cast<long>(kFixed * i));
         std::copy_n(surface.finding.begin() + static_cast<long>(4 * i), 4,
-                    fixed.begin() + static_cast<long>(7 * i + 3));
+                    fixed.begin() + static_cast<long>(kFixed * i + 3));
+        fixed[kFixed * i + 7] = i < surface.fluidDepth.size() ? surface.fluidDepth[i] : kDryDepth;
     }
     gl.GenBuffers(1, &m_staticBuffer);
     gl.BindBuffer(GL_ARRAY_BUFFER, m_staticBuffer);
     gl.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(fixed.size() * sizeof(float)), fixed.data(),
                   GL_STATIC_DRAW);
-    gl.VertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, 7 * sizeof(float), nullptr);
-    gl.VertexAttribPointer(3, 4, GL_FLOAT, GL_FALSE, 7 * sizeof(float),
-                           reinterpret_cast<void*>(3 * sizeof(float)));
+    constexpr auto kStride = static_cast<GLsizei>(kFixed * sizeof(float));
+    gl.VertexAttribPointer(2, 3, GL_FLOAT, GL_FALSE, kStride, nullptr);
+    gl.VertexAttribPointer(3, 4, GL_FLOAT, GL_FALSE, kStride, reinterpret_cast<void*>(3 * sizeof(float)));
+    gl.VertexAttribPointer(5, 1, GL_FLOAT, GL_FALSE, kStride, reinterpret_cast<void*>(7 * sizeof(float)));
     gl.EnableVertexAttribArray(2);
     gl.EnableVertexAttribArray(3);
+    gl.EnableVertexAttribArray(5);
 
     m_bleedingNear.assign(numVertices, 0.0F);
     gl.GenBuffers(1, &m_bleedingBuffer);
@@ -286,6 +293,9 @@ void EndoscopeView::render(const CameraPose& pose, const LensState& lens, int wi
     gl.Uniform1f(m_wall->uniform("uSpotExponent"), static_cast<float>(m_parameters.spotExponent));
     gl.Uniform1f(m_wall->uniform("uSpecular"), static_cast<float>(m_parameters.specular));
     gl.Uniform1f(m_wall->uniform("uBumpDepth"), static_cast<float>(m_parameters.bumpDepth));
+    gl.Uniform1f(m_wall->uniform("uFluidAttenuation"), static_cast<float>(m_parameters.fluidAttenuation));
+    const Eigen::Vector3f up = m_up.cast<float>();
+    gl.Uniform3f(m_wall->uniform("uUp"), up.x(), up.y(), up.z());
     gl.Uniform1i(m_wall->uniform("uBleedingCount"), static_cast<GLint>(m_marks.size()));
     if (!m_marks.empty()) {
         gl.Uniform4fv(m_wall->uniform("uBleeding"), static_cast<GLsizei>(m_marks.size()),

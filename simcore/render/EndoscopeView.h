@@ -32,6 +32,23 @@
 ///   uniform array in chart coordinates, so they stay at their place of the
 ///   tissue; a per-vertex flag (set when the marks change) limits the
 ///   per-fragment loop to triangles within reach of a mark.
+/// Residual fluid (WallSurface::fluidDepth, ResidualFluid.h): where the
+///   wall lies a depth z below its pool's level, the view ray from the lens
+///   (the light's place too) runs x = min(z / |ray.up|, |ray|) through the
+///   liquid, as the surface is a horizontal plane. The wall's light comes
+///   back attenuated by exp(-2 mu_c x) per colour channel c (in and out;
+///   mu from fluidAttenuation, more in blue, so the mucosa seen through is
+///   yellow-brown and fades with depth and grazing views), the liquid adds
+///   its own back-scatter, (1 - exp(-2 mu x)) times a yellow-brown albedo
+///   and (0.35 + 0.65 cos) of the light's incidence on the surface, and the
+///   flat surface a mirror-like highlight, specular * 4 * (up.L)^400 (light
+///   and eye coincide): a sharp spot where the surface faces the lens. The
+///   wall's own wet highlight is not drawn under the liquid. With the lens
+///   itself below the level the submerged wall is seen through the whole ray,
+///   the liquid scatters back as lit one round-trip attenuation length
+///   1 / (2 mu) ahead (a yellow-brown murk), and the wall above the level is
+///   drawn dry (a lens in the pool is a moment's event: the endoscopist
+///   suctions or lifts the tip).
 /// Red-out: amount = clamp((D_red - d) / (D_red - D_contact), 0, 1), d the
 /// distance from the lens to the nearest wall vertex ahead of it.
 
@@ -126,6 +143,7 @@ private:
     std::vector<WallPlace> m_markPlaces;  ///< each mark's place on the chart
     std::vector<float> m_markUniforms;    ///< 4 per mark: s (mm), angle (rad), radius (mm), opacity
     std::vector<float> m_bleedingNear;    ///< per vertex
+    Eigen::Vector3d m_up;                 ///< against gravity: the fluid surface's normal
     double m_redOut = 0.0;
 };
 

@@ -9,7 +9,7 @@ namespace colonosim::render {
 namespace {
 using R = RenderParameters;
 using params::Field;
-constexpr std::array<Field<R>, 17> kRenderFields{{
+constexpr std::array<Field<R>, 18> kRenderFields{{
     {&R::fieldOfViewSpec, &R::fieldOfView},
     {&R::lightIntensitySpec, &R::lightIntensity},
     {&R::autoLightDistanceSpec, &R::autoLightDistance},
@@ -17,6 +17,7 @@ constexpr std::array<Field<R>, 17> kRenderFields{{
     {&R::spotExponentSpec, &R::spotExponent},
     {&R::specularSpec, &R::specular},
     {&R::bumpDepthSpec, &R::bumpDepth},
+    {&R::fluidAttenuationSpec, &R::fluidAttenuation},
     {&R::redOutDistanceSpec, &R::redOutDistance},
     {&R::contactDistanceSpec, &R::contactDistance},
     {&R::nearDistanceSpec, &R::nearDistance},

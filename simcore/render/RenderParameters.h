@@ -68,6 +68,17 @@ struct RenderParameters {
         1e-3,
         "relief of the fine mucosal texture used for normal perturbation",
         "innominate grooves and areae of the colonic mucosa, about 0.1-0.3 mm"};
+    static constexpr Spec fluidAttenuationSpec{
+        "fluidAttenuation",
+        "1/m",
+        80.0,
+        5.0,
+        2000.0,
+        "residual fluid: attenuation of light in the liquid (green; red 0.6 and blue 1.8 times this), "
+        "exp(-mu x) over the path x in and out",
+        "model choice: bile-stained residual fluid shows the mucosa dimly through 5 mm (45% of the green "
+        "light comes back, in and out) and hides it under 2 cm (4%) or in a grazing view, as on endoscopic "
+        "images of poorly prepared colons"};
     static constexpr Spec redOutDistanceSpec{
         "redOutDistance",
         "m",
@@ -153,6 +164,7 @@ struct RenderParameters {
     double spotExponent = spotExponentSpec.defaultValue;
     double specular = specularSpec.defaultValue;
     double bumpDepth = bumpDepthSpec.defaultValue;
+    double fluidAttenuation = fluidAttenuationSpec.defaultValue;
     double redOutDistance = redOutDistanceSpec.defaultValue;
     double contactDistance = contactDistanceSpec.defaultValue;
     double nearDistance = nearDistanceSpec.defaultValue;

@@ -50,11 +50,13 @@ layout(location = 1) in vec3 aNormal;
 layout(location = 2) in vec3 aSurface;   // chart: s, r cos(theta), r sin(theta) (m)
 layout(location = 3) in vec4 aFinding;   // lesion weight, tissue code, stool, diverticulum
 layout(location = 4) in float aBleedingNear;  // 1 within reach of a bleeding mark
+layout(location = 5) in float aFluidDepth;    // m below the residual fluid's surface
 out vec3 vWorld;
 out vec3 vNormal;
 out vec3 vSurface;
 out vec4 vFinding;
 out float vBleedingNear;
+out float vFluidDepth;
 void main()
 {
     vec3 c;
@@ -64,6 +66,7 @@ void main()
     vSurface = aSurface;
     vFinding = aFinding;
     vBleedingNear = aBleedingNear;
+    vFluidDepth = aFluidDepth;
 }
 )";
 
@@ -169,6 +172,7 @@ in vec3 vNormal;
 in vec3 vSurface;
 in vec4 vFinding;
 in float vBleedingNear;
+in float vFluidDepth;
 out vec4 fragColour;
 uniform sampler2D uMucosa;
 uniform int uBleedingCount;
@@ -179,7 +183,11 @@ uniform float uSpotExponent;
 uniform vec3 uViewAxis;
 uniform float uSpecular;
 uniform float uBumpDepth;           // m
+uniform float uFluidAttenuation;    // 1/m, green; red and blue scaled by kFluidSpectrum
+uniform vec3 uUp;                   // against gravity: the fluid surface's normal
 const float kTile = 160.0;          // mm, as in the bake
+const vec3 kFluidSpectrum = vec3(0.6, 1.0, 1.8);  // bile absorbs blue most: yellow-brown
+const vec3 kFluidAlbedo = vec3(0.60, 0.42, 0.13);  // back-scatter of turbid residual fluid
 // The baked tile at chart (s, angle), scaled by `zoom`. atan's branch cut
 // at +-pi makes the angle jump by a whole turn between neighbouring pixels;
 // there the other branch, fract(turn), is continuous and is used instead
@@ -198,7 +206,12 @@ void main()
     vec3 chart = vSurface * 1000.0;  // mm
     vec4 m = mucosa(chart, 1.0);
     float lesion = vFinding.x;
-    vec4 fineDetail = lesion > 0.0 ? mucosa(chart, 5.0) : vec4(0.5);
+    // Tissue: 0 adenoma, 1 serrated, 2 cancer (their own surface, with a pit
+    // pattern), 3 lipoma (under intact mucosa: the normal surface).
+    int tissue = int(vFinding.y + 0.5);
+    bool lipoma = tissue == 3;
+    float pits = lipoma ? 0.0 : lesion;
+    vec4 fineDetail = pits > 0.0 ? mucosa(chart, 5.0) : vec4(0.5);
     vec3 toLight = uLightPosition - vWorld;
     float distance = max(length(toLight), 1e-4);
     vec3 L = toLight / distance;
@@ -209,7 +222,7 @@ void main()
     }
     vec3 smoothNormal = N;
     // Normal perturbation from the baked relief (bump mapping by screen derivatives).
-    float height = uBumpDepth * (m.a + lesion * 2.0 * fineDetail.a);
+    float height = uBumpDepth * (m.a + pits * 2.0 * fineDetail.a);
     vec3 dpdx = dFdx(vWorld);
     vec3 dpdy = dFdy(vWorld);
     float dhdx = dFdx(height);
@@ -225,18 +238,24 @@ void main()
         N = dot(bumped, N) > 0.2 * length(bumped) ? normalize(bumped) : N;
     }
 
-    // Mucosa: pink with a submucosal vessel network.
+    // Mucosa: pink; a lipoma's yellow fat shows through it.
     vec3 albedo = vec3(0.96, 0.46, 0.36) * (0.85 + 0.3 * m.g);
-    albedo = mix(albedo, vec3(0.60, 0.08, 0.10), 0.55 * m.r * (1.0 - lesion));
+    if (lipoma) {
+        albedo = mix(albedo, vec3(0.95, 0.74, 0.34) * (0.9 + 0.2 * m.g), 0.7 * lesion);
+    }
+    // The submucosal vessel network, hidden by lesions with their own surface.
+    albedo = mix(albedo, vec3(0.60, 0.08, 0.10), 0.55 * m.r * (1.0 - pits));
 
     // Lesions: 0 adenoma (redder, pit pattern), 1 serrated (pale, mucus cap), 2 cancer.
-    int tissue = int(vFinding.y + 0.5);
     vec3 lesionColour = tissue == 0 ? vec3(0.86, 0.36, 0.32) * (0.7 + 0.6 * fineDetail.g)
                         : tissue == 1 ? vec3(0.90, 0.74, 0.58) * (0.85 + 0.3 * fineDetail.g)
                                       : vec3(0.55, 0.14, 0.16) * (0.5 + 1.0 * fineDetail.b);
-    albedo = mix(albedo, lesionColour, lesion);
-    // Diverticulum: a dark pocket.
-    albedo *= 1.0 - 0.75 * vFinding.w;
+    albedo = mix(albedo, lesionColour, pits);
+    // Diverticulum: a dark opening. The light guides sit beside the lens, so
+    // the neck shades the sac behind it, which sends little light back: the
+    // mouth darkens to 8% over its inner three quarters and shades off to the rim.
+    float sac = smoothstep(0.0, 0.25, vFinding.w);
+    albedo *= 1.0 - 0.92 * sac;
     // Residual stool: brown-yellow patches covering the given fraction.
     float stoolMask = smoothstep(1.0 - vFinding.z, 1.0 - vFinding.z + 0.08, m.b) * step(0.001, vFinding.z);
     albedo = mix(albedo, vec3(0.58, 0.36, 0.12), stoolMask);
@@ -264,11 +283,37 @@ void main()
     float diffuse = max(dot(N, L), 0.0);
     // Wet mucosa: a sharp specular lobe (light and eye coincide, so H = L),
     // stronger where mucus pools.
-    float wet = uSpecular * (0.5 + m.g) * (1.0 - 0.7 * stoolMask);
+    float wet = uSpecular * (0.5 + m.g) * (1.0 - 0.7 * stoolMask) * (1.0 - sac);
     // The mucus film smooths the relief for the highlight (half the bump).
     vec3 filmNormal = normalize(smoothNormal + N);
     float specular = wet * pow(max(dot(filmNormal, L), 0.0), 90.0);
     vec3 colour = irradiance * (albedo * diffuse + vec3(specular));
+    // Residual fluid (EndoscopeView.h): the wall seen through the liquid,
+    // the liquid's back-scatter and its level surface's mirror highlight.
+    // Compiled only for a wall with fluid: the software rasteriser pays for
+    // a branch's body even where no fragment takes it.
+#ifdef RESIDUAL_FLUID
+    if (vFluidDepth > 0.0) {
+        vec3 ray = vWorld - uLightPosition;
+        float rayLength = max(length(ray), 1e-6);
+        ray /= rayLength;
+        float rise = dot(ray, uUp);
+        bool lensUnder = vFluidDepth + rayLength * rise > 0.0;
+        float path = lensUnder ? rayLength : min(vFluidDepth / max(abs(rise), 1e-3), rayLength);
+        vec3 transmission = exp(-2.0 * uFluidAttenuation * path * kFluidSpectrum);
+        // Where the liquid scatters back: at its surface, or, with the lens
+        // in it, one round-trip attenuation length ahead.
+        vec3 surfacePoint = lensUnder ? uLightPosition + ray * min(0.5 / uFluidAttenuation, rayLength)
+                                      : vWorld - ray * path;
+        vec3 toLens = uLightPosition - surfacePoint;
+        float d = max(length(toLens), 1e-4);
+        float facing = lensUnder ? 1.0 : max(dot(uUp, toLens / d), 0.0);
+        float e = uLightIntensity * 1e-4 / (d * d) * pow(max(dot(-toLens / d, uViewAxis), 0.0), uSpotExponent);
+        float scatter = (1.0 - exp(-2.0 * uFluidAttenuation * path)) * (0.35 + 0.65 * facing);
+        float mirror = lensUnder ? 0.0 : uSpecular * 4.0 * pow(facing, 400.0);
+        colour = irradiance * albedo * diffuse * transmission + e * (kFluidAlbedo * scatter + vec3(mirror));
+    }
+#endif
     // Film response: soft shoulder instead of clipping.
     colour = vec3(1.0) - exp(-colour * 1.6);
     fragColour = vec4(colour, 1.0);

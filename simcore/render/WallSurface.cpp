@@ -12,6 +12,9 @@
 namespace colonosim::render {
 
 namespace {
+/// Reach of a lesion's tissue code, in lesion radii (WallSurface.h).
+constexpr double kTissueReach = 2.0;
+
 int sampleAt(const geometry::Centreline& centreline, double arcLength)
 {
     const auto it = std::lower_bound(centreline.arcLength.begin(), centreline.arcLength.end(), arcLength);
@@ -72,6 +75,16 @@ WallSurface buildWallSurface(const geometry::TriangleMesh& visualRest, const geo
     if (centreline.numPoints() < 2) {
         throw std::invalid_argument("buildWallSurface: the centreline needs at least two samples");
     }
+    if (!findings.down.allFinite() || findings.down.norm() < 1e-9) {
+        throw std::invalid_argument("buildWallSurface: the down direction must be a finite, non-zero vector");
+    }
+    for (const FluidPool& pool : findings.fluid) {
+        if (!(pool.volume >= 0.0) || !std::isfinite(pool.volume)) {
+            throw std::invalid_argument(
+                "buildWallSurface: residual fluid volume = " + std::to_string(pool.volume) +
+                " m^3; a finite volume of at least 0 is required");
+        }
+    }
     WallSurface surface;
     surface.rest = visualRest;
     const int n = visualRest.numVertices();
@@ -104,10 +117,13 @@ WallSurface buildWallSurface(const geometry::TriangleMesh& visualRest, const geo
         const Eigen::Vector3d radial =
             (offset - offset.dot(centreline.tangents[ks]) * centreline.tangents[ks]).normalized();
         double relief = 0.0;
+        double nearestLesion = kTissueReach;  // d / R of the nearest lesion
         for (size_t l = 0; l < findings.lesions.size(); ++l) {
-            const auto [h, weight] = lesionRelief(findings.lesions[l], (v - lesionCentres[l]).norm());
-            if (weight > surface.finding[4 * iu]) {
-                surface.finding[4 * iu] = static_cast<float>(weight);
+            const double d = (v - lesionCentres[l]).norm();
+            const auto [h, weight] = lesionRelief(findings.lesions[l], d);
+            surface.finding[4 * iu] = std::max(surface.finding[4 * iu], static_cast<float>(weight));
+            if (d / (findings.lesions[l].diameter / 2.0) < nearestLesion) {
+                nearestLesion = d / (findings.lesions[l].diameter / 2.0);
                 surface.finding[4 * iu + 1] = static_cast<float>(findings.lesions[l].tissue);
             }
             relief += h;
@@ -130,6 +146,9 @@ WallSurface buildWallSurface(const geometry::TriangleMesh& visualRest, const geo
             surface.rest.vertices.col(i) = v - relief * radial;
         }
     }
+    surface.up = -findings.down.normalized();
+    surface.fluidDepth =
+        fluidDepths(surface.rest.vertices, nearest, centreline, findings.fluid, findings.down);
     return surface;
 }
 

@@ -21,11 +21,21 @@
 ///   flat (0-IIa): H = 1.5 mm, h = H (1 - (d/R)^2)
 ///   depressed:    H = -1 mm
 ///   diverticulum: a pocket outwards, depth D, h = -D (1 + cos(pi d / R)) / 2,
-/// and a colour weight fading over the outer fifth of R.
+/// and a colour weight fading over the outer fifth of R. Each vertex within
+/// 2 R of a lesion carries the tissue code of the nearest one (by d / R), so
+/// the code does not blend with another's across a lesion's rim.
+/// Tissue: adenoma (reddish, pit pattern), serrated (pale, mucus cap), cancer
+/// (dark red, irregular), lipoma (a submucosal fat mound under intact mucosa:
+/// yellow through the normal mucosa and its vessels, smooth, no pit pattern).
+/// Diverticulum: the shader darkens its mouth to a black opening (the light
+/// guides beside the lens do not reach into the sac behind the neck).
+/// Residual fluid: pools at their level (ResidualFluid.h); each vertex
+/// carries its depth below the surface for the shader.
 
 #include "simcore/geometry/Centreline.h"
 #include "simcore/geometry/Segment.h"
 #include "simcore/geometry/TriangleMesh.h"
+#include "simcore/render/ResidualFluid.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -37,7 +47,8 @@
 namespace colonosim::render {
 
 enum class LesionShape : std::uint8_t { Pedunculated, Sessile, Flat, Depressed };
-enum class LesionTissue : std::uint8_t { Adenoma, Serrated, Cancer };
+/// The numeric values are the shader's tissue codes (Shaders.h, kWallFragment).
+enum class LesionTissue : std::uint8_t { Adenoma = 0, Serrated = 1, Cancer = 2, Lipoma = 3 };
 
 /// A place on the wall: arc length along the centreline (m), clock angle (rad).
 struct WallPlace {
@@ -78,12 +89,18 @@ struct WallFindings {
     std::vector<Lesion> lesions;
     std::vector<Diverticulum> diverticula;
     std::array<double, geometry::kNumSegments> stoolFraction{};  ///< fraction of mucosa covered, by Segment
+    std::vector<FluidPool> fluid;                                ///< residual fluid (ResidualFluid.h)
+    /// Gravity's direction in the mesh's frame (unit): patient LPS, +x in
+    /// left lateral decubitus (physics::downDirection).
+    Eigen::Vector3d down = Eigen::Vector3d::UnitX();
 };
 
 struct WallSurface {
     geometry::TriangleMesh rest;  ///< visual mesh at rest with the findings' relief
     std::vector<float> chart;     ///< 3 per vertex: s, r cos(theta), r sin(theta) (m)
     std::vector<float> finding;   ///< 4 per vertex: lesion weight, tissue code, stool fraction, diverticulum
+    std::vector<float> fluidDepth;  ///< 1 per vertex: m below its pool's surface (ResidualFluid.h)
+    Eigen::Vector3d up = -Eigen::Vector3d::UnitX();  ///< against gravity (unit), the pools' surface normal
     std::vector<geometry::Segment> vertexSegment;
     std::vector<Eigen::Vector3d> lesionTops;  ///< rest position of each lesion's highest point
 };
@@ -100,8 +117,10 @@ struct WallSurface {
 [[nodiscard]] WallPlace chartPlaceAt(const Eigen::Matrix3Xd& restVertices, const std::vector<float>& chart,
                                      const Eigen::Vector3d& p);
 
-/// Builds the chart, findings and relief for `visualRest`. Throws
-/// std::invalid_argument when the centreline has fewer than two samples.
+/// Builds the chart, findings, relief and fluid depths for `visualRest`.
+/// Throws std::invalid_argument when the centreline has fewer than two
+/// samples, `findings.down` is zero or not finite or a pool's volume is
+/// negative or not finite.
 [[nodiscard]] WallSurface buildWallSurface(const geometry::TriangleMesh& visualRest,
                                            const geometry::Centreline& centreline,
                                            const WallFindings& findings);

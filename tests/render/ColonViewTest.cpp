@@ -9,6 +9,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
 namespace {
 
 using namespace colonosim;
@@ -35,11 +40,12 @@ render::CameraPose centrelinePose(double s)
     return pose;
 }
 
-render::RgbaImage renderColon(const render::WallFindings& findings, double s)
+render::RgbaImage renderColon(const render::WallFindings& findings, double s,
+                              const geometry::ColonAnatomy& anatomy = colon())
 {
     render::OffscreenContext context(480, 360);
     const render::WallSurface surface =
-        render::buildWallSurface(colon().visualMesh, colon().centreline, findings);
+        render::buildWallSurface(anatomy.visualMesh, anatomy.centreline, findings);
     render::EndoscopeView view(context.gl(), surface, render::RenderParameters{});
     view.render(centrelinePose(s), {}, 480, 360);
     return context.readBack();
@@ -87,6 +93,123 @@ TEST(ColonView, FindingsAndResidualStoolInTheSigmoid)
     // turns brown-yellow, where the clean wall has next to none.
     EXPECT_LT(stoolLike(clean), 0.02);
     EXPECT_GT(stoolLike(stool), 0.10) << stoolLike(stool);
+}
+
+/// Mean luminance of the 7 x 7 block centred on (x, y).
+double blockLuminance(const render::RgbaImage& image, int x, int y)
+{
+    double sum = 0.0;
+    for (int dy = -3; dy <= 3; ++dy) {
+        for (int dx = -3; dx <= 3; ++dx) {
+            sum += colonosim::testing::luminance(image, x + dx, y + dy) / 49.0;
+        }
+    }
+    return sum;
+}
+
+/// The far lumen: the centroid of the darkest 3% of the pixels inside the
+/// image circle (each the mean of a 7 x 7 block, so a vessel is no lumen).
+Eigen::Vector2d lumenCentre(const render::RgbaImage& image)
+{
+    std::vector<std::pair<double, Eigen::Vector2d>> pixels;
+    for (int y = 3; y < image.height - 3; y += 2) {
+        for (int x = 3; x < image.width - 3; x += 2) {
+            if (std::hypot(x + 0.5 - image.width / 2.0, y + 0.5 - image.height / 2.0) <
+                0.9 * image.height / 2.0) {
+                pixels.emplace_back(blockLuminance(image, x, y), Eigen::Vector2d(x + 0.5, y + 0.5));
+            }
+        }
+    }
+    const auto darkest = pixels.begin() + static_cast<long>(pixels.size() * 3 / 100);
+    std::nth_element(pixels.begin(), darkest, pixels.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+    for (auto it = pixels.begin(); it != darkest; ++it) {
+        sum += it->second;
+    }
+    return sum / static_cast<double>(darkest - pixels.begin());
+}
+
+/// Luminance (7 x 7 block means) along the ray from `origin` at `angle`
+/// (rad) every 2 pixels until the ray leaves 95% of the image circle.
+std::vector<double> rayProfile(const render::RgbaImage& image, const Eigen::Vector2d& origin, double angle)
+{
+    std::vector<double> profile;
+    const Eigen::Vector2d centre(image.width / 2.0, image.height / 2.0);
+    const Eigen::Vector2d direction(std::cos(angle), std::sin(angle));
+    for (double t = 0.0;; t += 2.0) {
+        const Eigen::Vector2d p = origin + t * direction;
+        if ((p - centre).norm() > 0.95 * image.height / 2.0) {
+            break;
+        }
+        profile.push_back(blockLuminance(image, static_cast<int>(p.x()), static_cast<int>(p.y())));
+    }
+    return profile;
+}
+
+/// The deepest valley of a ray's profile beyond its darkest point (the far
+/// lumen), as a ratio: max over b of log((min(max before b, max after b) +
+/// 0.02) / (p_b + 0.02)), the 0.02 keeping the noise of the dark lumen out.
+/// A profile that rises and then falls (a smooth tube: the wall brightens
+/// outwards as it nears the lens, then dims at the edge of the light's cone)
+/// has none; bright fold crests with darker valleys behind them make one.
+double deepestValley(const std::vector<double>& profile)
+{
+    const auto first = std::min_element(profile.begin(), profile.end());
+    double deepest = 0.0;
+    for (auto it = first + 1; it + 1 < profile.end(); ++it) {
+        const double before = *std::max_element(first, it);
+        const double after = *std::max_element(it + 1, profile.end());
+        deepest = std::max(deepest, std::log((std::min(before, after) + 0.02) / (*it + 0.02)));
+    }
+    return deepest;
+}
+
+/// Median over 24 rays from the far lumen of each ray's deepest valley.
+double medianValley(const render::RgbaImage& image)
+{
+    const Eigen::Vector2d lumen = lumenCentre(image);
+    std::vector<double> valleys;
+    for (int k = 0; k < 24; ++k) {
+        valleys.push_back(deepestValley(rayProfile(image, lumen, 2.0 * std::numbers::pi * k / 24)));
+    }
+    std::nth_element(valleys.begin(), valleys.begin() + 12, valleys.end());
+    return valleys[12];
+}
+
+// Looking along the straight descending colon from three places: the
+// haustral folds make bright rings (their crests facing the lens) and dark
+// ones (the valleys behind them) on the way from the far lumen to the image's
+// edge; the same colon without folds (haustralFoldDepth 0) brightens
+// smoothly outwards. Measured medians at eight places along it (a tenth to
+// eight tenths of its length): 0.20-0.41 with folds, 0.03-0.07 without; the
+// test asks above 0.15 and below 0.1.
+TEST(ColonView, HaustralFoldsGiveAlternatingBandsAlongAStraightSegment)
+{
+    const geometry::Centreline& c = colon().centreline;
+    double first = -1.0;
+    double last = -1.0;
+    for (int k = 0; k < c.numPoints(); ++k) {
+        if (c.segment[static_cast<size_t>(k)] == geometry::Segment::Descending) {
+            first = first < 0.0 ? c.arcLength[static_cast<size_t>(k)] : first;
+            last = c.arcLength[static_cast<size_t>(k)];
+        }
+    }
+    ASSERT_GT(last - first, 0.1) << "the default descending colon is at least 10 cm long";
+    geometry::AnatomyParameters smoothParameters;
+    smoothParameters.haustralFoldDepth = 0.0;
+    const geometry::ColonAnatomy smoothColon = geometry::buildProceduralColon(smoothParameters);
+    for (const double fraction : {0.2, 0.4, 0.6}) {
+        const double s = first + fraction * (last - first);
+        const render::RgbaImage folds = renderColon({}, s);
+        const render::RgbaImage smooth = renderColon({}, s, smoothColon);
+        if (fraction == 0.4) {
+            colonosim::testing::saveArtefact(folds, "descending_folds.png");
+            colonosim::testing::saveArtefact(smooth, "descending_no_folds.png");
+        }
+        EXPECT_GT(medianValley(folds), 0.15) << "at " << s << " m";
+        EXPECT_LT(medianValley(smooth), 0.1) << "at " << s << " m";
+    }
 }
 
 }  // namespace
