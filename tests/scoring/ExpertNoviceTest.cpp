@@ -2,8 +2,9 @@
 // scripted expert's composite score is above the scripted novice's. Each run
 // is 10 s of simulated time (a whole run takes the expert 60-120 s, several
 // minutes of a core each), so what is scored is the first part of the
-// insertion: forces, loops, view, discomfort, pace, the wall seen. Benchmarks come from the expert on three
-// other patients (seeds 101-103), so no run is scored against itself.
+// insertion: forces, loops, view, discomfort, pace, the wall seen.
+// Benchmarks come from the expert on three other patients (seeds 101-103),
+// so no run is scored against itself.
 #include "case_generator/CaseGenerator.h"
 #include "case_generator/SceneSpec.h"
 #include "scoring/Benchmarks.h"
