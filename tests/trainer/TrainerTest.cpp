@@ -21,6 +21,7 @@
 #include "trainer_ui/app/ProcedureScreen.h"
 #include "trainer_ui/app/ReplayScreen.h"
 #include "trainer_ui/app/ResultsScreen.h"
+#include "trainer_ui/app/ShapeViewWidget.h"
 #include "trainer_ui/app/SimulationRunner.h"
 #include "trainer_ui/app/TaskBrief.h"
 #include "trainer_ui/cli/RecordsAccess.h"
@@ -255,8 +256,15 @@ TEST(Trainer, AStudentTakesTheFirstTaskSeesTheResultsAndReplaysIt)
     wall.start();
     const long frames0 = procedure->framesDrawn();
     const double time0 = procedure->shownTime();
+    auto* shape = child<app::ShapeViewWidget>(window, "shapeView");
+    const long redraws0 = shape->redraws();
     ASSERT_SOON(procedure->shownTime() >= 3.5);
     const double seconds = static_cast<double>(wall.elapsed()) / 1000.0;
+    const double shapeRate = static_cast<double>(shape->redraws() - redraws0) / seconds;
+    std::cout << "scope-shape view: " << shapeRate << " redraws/s\n";
+    EXPECT_GT(shapeRate, 1.0) << "the shape view follows the procedure";
+    EXPECT_LE(shapeRate, app::ShapeViewWidget::kRedrawRate + 1.0)
+        << "and leaves the frame budget to the camera";
     std::cout << "procedure screen over " << seconds << " s: graphics "
               << static_cast<double>(procedure->framesDrawn() - frames0) / seconds << " frames/s, physics "
               << 1000.0 * (procedure->shownTime() - time0) / seconds

@@ -24,6 +24,13 @@ ShapeViewWidget::~ShapeViewWidget()
 void ShapeViewWidget::showSnapshot(const Snapshot* snapshot)
 {
     m_snapshot = snapshot;
+    const auto now = std::chrono::steady_clock::now();
+    const bool running = snapshot != nullptr && snapshot->state == Snapshot::State::Running;
+    if (running && now - m_lastRedraw < std::chrono::duration<double>(1.0 / kRedrawRate)) {
+        return;  // drawn by a later snapshot
+    }
+    m_lastRedraw = now;
+    ++m_redraws;
     update();
 }
 
