@@ -34,8 +34,16 @@ QProgressBar* gauge(const char* name, int maximum)
     return bar;
 }
 
+/// Sets the gauge's colour. A style sheet is parsed and the widget
+/// re-polished on every call, equal or not, and the display updates up to
+/// 60 times a second: only a change is set.
 void colour(QProgressBar* bar, const char* chunk)
 {
+    const QString colour = QString::fromLatin1(chunk);
+    if (bar->property("chunkColour").toString() == colour) {
+        return;
+    }
+    bar->setProperty("chunkColour", colour);
     bar->setStyleSheet(
         QStringLiteral("QProgressBar { border: 1px solid #777; border-radius: 3px; background: "
                        "#2b2b2b; height: 14px; } QProgressBar::chunk { background: %1; }")
@@ -120,10 +128,13 @@ void HeadsUpDisplay::showSnapshot(const Snapshot& snapshot, double graphicsRate,
     colour(m_comfort, scale >= 4 ? "#e0463c" : (scale == 3 ? "#e0a43c" : "#3fa34d"));
     m_comfortText->setText(tr("%1 / 10 — %2").arg(frame.discomfort, 0, 'f', 1).arg(comfortWords(scale)));
     m_loop->setText(loopWords(frame.loop));
-    m_loop->setStyleSheet(
+    const QString loopStyle =
         frame.loop == procedure::LoopKind::None
             ? QStringLiteral("color: #3fa34d; font-weight: bold;")
-            : QStringLiteral("color: white; background: #c0392b; font-weight: bold; padding: 2px;"));
+            : QStringLiteral("color: white; background: #c0392b; font-weight: bold; padding: 2px;");
+    if (m_loop->styleSheet() != loopStyle) {  // re-polished on every set: only a change
+        m_loop->setStyleSheet(loopStyle);
+    }
     m_mucosa->setText(snapshot.mucosaSeen < 0.0
                           ? tr("not measured")
                           : tr("%1% of the wall").arg(100.0 * snapshot.mucosaSeen, 0, 'f', 1));
