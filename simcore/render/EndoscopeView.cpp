@@ -262,7 +262,7 @@ void EndoscopeView::render(const CameraPose& pose, const LensState& lens, int wi
     resizeTarget(width, height);
     const double aspect = static_cast<double>(width) / static_cast<double>(height);
     const Eigen::Vector3d forward = pose.rotation.col(2);
-    const double ahead = wallDistanceAhead(pose.position, forward);
+    const double ahead = std::min(wallDistanceAhead(pose.position, forward), lens.wallDistance);
     m_redOut = std::clamp((m_parameters.redOutDistance - ahead) /
                               (m_parameters.redOutDistance - m_parameters.contactDistance),
                           0.0, 1.0);

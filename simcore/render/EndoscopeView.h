@@ -50,7 +50,8 @@
 ///   drawn dry (a lens in the pool is a moment's event: the endoscopist
 ///   suctions or lifts the tip).
 /// Red-out: amount = clamp((D_red - d) / (D_red - D_contact), 0, 1), d the
-/// distance from the lens to the nearest wall vertex ahead of it.
+/// distance from the lens to the nearest wall vertex ahead of it, or the
+/// simulation's lens-wall distance when nearer (LensState::wallDistance).
 
 #include "simcore/render/FisheyeLens.h"
 #include "simcore/render/GlFunctions.h"
@@ -60,6 +61,7 @@
 
 #include <Eigen/Core>
 
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -69,6 +71,13 @@ namespace colonosim::render {
 struct LensState {
     double soiling = 0.0;      ///< 0 clean .. 1 covered (lens wash brings it to 0)
     double soilingSeed = 0.0;  ///< moves the droplet pattern
+    /// m from the lens to the wall as the simulation has it
+    /// (ProcedureFrame::lensWallDistance: 0 at the wall or through it), or
+    /// infinity when unknown. Red-out takes the nearer of this and the
+    /// renderer's own distance to the wall ahead: a lens pressed through the
+    /// wall's surface has no wall ahead of it, and a real scope there shows
+    /// red-out, not black.
+    double wallDistance = std::numeric_limits<double>::infinity();
 };
 
 class EndoscopeView {

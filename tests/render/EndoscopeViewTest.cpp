@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include <vector>
 
 namespace {
@@ -26,7 +28,8 @@ struct Frame {
 };
 
 Frame renderTube(const render::WallFindings& findings, const render::CameraPose& pose, double soiling = 0.0,
-                 const std::vector<render::BleedingMark>& marks = {})
+                 const std::vector<render::BleedingMark>& marks = {},
+                 double wallDistance = std::numeric_limits<double>::infinity())
 {
     render::OffscreenContext context(kWidth, kHeight);
     const auto tube = colonosim::testing::straightTube(kRadius, kLength, 0.002, 64);
@@ -34,7 +37,7 @@ Frame renderTube(const render::WallFindings& findings, const render::CameraPose&
     const render::WallSurface surface = render::buildWallSurface(tube, centreline, findings);
     render::EndoscopeView view(context.gl(), surface, render::RenderParameters{});
     view.setBleedingMarks(marks);
-    view.render(pose, {soiling, 0.0}, kWidth, kHeight);
+    view.render(pose, {soiling, 0.0, wallDistance}, kWidth, kHeight);
     return {context.readBack(), view.redOut()};
 }
 
@@ -91,6 +94,38 @@ TEST(EndoscopeView, RedOutFrameIsDominatedByRed)
     }
     EXPECT_GT(r, 4.0 * g);
     EXPECT_GT(r, 4.0 * b);
+}
+
+// Pushed hard, the tip's lens can end up just through the wall's surface,
+// facing out of the lumen: no wall lies ahead, and the picture would be
+// black. The simulation knows the lens is at the wall (its lens-wall
+// distance is 0), and a real scope there shows red-out: so does the view.
+TEST(EndoscopeView, ALensPressedThroughTheWallIsRedOutNotBlack)
+{
+    render::CameraPose pose;
+    pose.position = Eigen::Vector3d(kRadius + 0.001, 0.0, 0.15);  // 1 mm beyond the wall
+    pose.rotation.col(2) = Eigen::Vector3d::UnitX();              // forward: out of the lumen
+    pose.rotation.col(1) = Eigen::Vector3d::UnitZ();              // up
+    pose.rotation.col(0) = pose.rotation.col(1).cross(pose.rotation.col(2));
+    const Frame blind = renderTube({}, pose);
+    EXPECT_DOUBLE_EQ(blind.redOut, 0.0) << "the renderer alone sees no wall ahead";
+    EXPECT_LT(ringMean(blind.image, 0.0, 0.9), 0.02) << "and draws black";
+    const Frame pressed = renderTube({}, pose, 0.0, {}, 0.0);
+    colonosim::testing::saveArtefact(pressed.image, "red_out_through_wall.png");
+    EXPECT_DOUBLE_EQ(pressed.redOut, 1.0);
+    double r = 0.0, g = 0.0, b = 0.0;
+    for (int y = kHeight / 4; y < 3 * kHeight / 4; ++y) {
+        for (int x = kWidth / 4; x < 3 * kWidth / 4; ++x) {
+            r += pressed.image.at(x, y)[0];
+            g += pressed.image.at(x, y)[1];
+            b += pressed.image.at(x, y)[2];
+        }
+    }
+    EXPECT_GT(r, 4.0 * g);
+    EXPECT_GT(r, 4.0 * b);
+    EXPECT_GT(r / (kWidth * kHeight / 4.0), 40.0) << "red, not black";
+    // A lens 2 cm from the wall by the simulation's measure leaves the view as it was.
+    EXPECT_DOUBLE_EQ(renderTube({}, pose, 0.0, {}, 0.02).redOut, 0.0);
 }
 
 TEST(EndoscopeView, LesionAheadAppearsWhereTheLensProjectsIt)

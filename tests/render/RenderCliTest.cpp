@@ -90,6 +90,44 @@ TEST(RenderCli, WritesViewAndShapePngsOfTheAskedSize)
     EXPECT_GT(lit, image.width() * image.height() / 10);
 }
 
+// The command pushes straight in without steering. On a tortuous generated
+// colon the lens ends at the wall or through it, and no picture is left
+// black without a word: a lens at the wall is red-out (as the recording has
+// it), and a tip pushed more than a scope diameter into the wall is said,
+// with how far. (On this case, at 550 mm the lens is at the wall, 0.6 mm
+// into it, and at 600 mm the tip is 56 mm through.)
+TEST(RenderCli, AnUnsteeredPushIntoTheWallIsRedOutOrSaidNeverABlackPicture)
+{
+    const std::filesystem::path dir(COLONOSIM_TEST_ARTEFACTS);
+    std::filesystem::create_directories(dir);
+    const auto caseFile = dir / "cli_tortuous_case.xml";
+    auto r = runColonosim("case generate --seed 2 --require \"boston<=3\" --out " + caseFile.string());
+    ASSERT_EQ(r.status, 0) << r.output;
+    int atOrThroughTheWall = 0;
+    for (const int millimetres : {550, 600}) {
+        const auto png = dir / ("cli_pushed_" + std::to_string(millimetres) + ".png");
+        r = runColonosim("render --case " + caseFile.string() + " --insertion-mm " +
+                         std::to_string(millimetres) + " --out " + png.string());
+        ASSERT_EQ(r.status, 0) << r.output;
+        const bool redOut = r.output.find("red-out 1\n") != std::string::npos;
+        const bool said =
+            r.output.find("mm into the wall (more than the scope's 13 mm diameter)") != std::string::npos;
+        atOrThroughTheWall += redOut || said ? 1 : 0;
+        const QImage image(QString::fromStdString(png.string()));
+        ASSERT_FALSE(image.isNull());
+        double sum = 0.0;
+        for (int y = 0; y < image.height(); ++y) {
+            for (int x = 0; x < image.width(); ++x) {
+                sum += qRed(image.pixel(x, y));
+            }
+        }
+        const double meanRed = sum / (image.width() * image.height());
+        EXPECT_TRUE(meanRed > 20.0 || said) << millimetres << " mm: a black picture (mean red " << meanRed
+                                            << ") and no word why: " << r.output;
+    }
+    EXPECT_GT(atOrThroughTheWall, 0) << "the scenario: an unsteered push ends at or through the wall";
+}
+
 TEST(RenderCli, AContactSheetTilesFramesAlongARunAndReportsTheMucosaSeen)
 {
     const std::filesystem::path dir(COLONOSIM_TEST_ARTEFACTS);

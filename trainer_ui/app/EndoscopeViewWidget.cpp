@@ -54,8 +54,9 @@ bool EndoscopeViewWidget::paintGL()
     m_scene->mapping.apply(m_snapshot->wall, m_visual);
     m_view->setWallPositions(m_visual);
     m_view->setBleedingMarks(m_snapshot->bleedingMarks);
-    m_view->render({m_snapshot->tip.position, m_snapshot->tip.rotation}, {m_snapshot->lensSoiling, 0.0},
-                   width, height, framebufferObject());
+    m_view->render({m_snapshot->tip.position, m_snapshot->tip.rotation},
+                   {m_snapshot->lensSoiling, 0.0, m_snapshot->frame.lensWallDistance}, width, height,
+                   framebufferObject());
     m_drawnInsertion = m_snapshot->frame.input.insertion;
     if (m_frames == 0) {
         m_clock.restart();  // the rate counts from the first frame drawn

@@ -193,7 +193,8 @@ int runRender(std::span<char* const> args)
         scene.mapping.apply(loop.colon().body.positions(), scene.visual);
         view.setWallPositions(scene.visual);
         view.setBleedingMarks(loop.bleedingMarks());
-        view.render(poseOf(loop.outputs().tip), {lensSoiling, 0.0}, size.width, size.height);
+        view.render(poseOf(loop.outputs().tip), {lensSoiling, 0.0, loop.lastFrame().lensWallDistance},
+                    size.width, size.height);
         return toQImage(context.readBack());
     };
 
@@ -213,6 +214,16 @@ int runRender(std::span<char* const> args)
         save(image, *out);
         std::cout << "endoscope view: " << *out << " (" << size.width << "x" << size.height << "), insertion "
                   << insertion * 1000.0 << " mm, red-out " << view.redOut() << '\n';
+        // The command pushes straight in without steering; on a tortuous colon the
+        // tip can end up through the wall, where the view shows nothing of the lumen.
+        const double depth = loop.lumen().contacts().back().depth;
+        if (depth > settings.scope.outerDiameter) {
+            std::cerr << "render: the unsteered push to " << insertion * 1000.0 << " mm has carried the tip "
+                      << std::lround(depth * 1000.0) << " mm into the wall (more than the scope's "
+                      << std::lround(settings.scope.outerDiameter * 1000.0)
+                      << " mm diameter), so the view shows no lumen; steer with --dials and --rotation-deg, "
+                         "or follow a scripted operator with --operator expert --contact-sheet\n";
+        }
         if (const auto shapePath = line.value("--shape-view")) {
             render::ShapeView shape(context.gl());
             std::vector<Eigen::Vector3d> nodes(loop.scope().nodePositions().begin(),
