@@ -90,7 +90,9 @@ Detection detectLesions(const std::vector<procedure::RecordedEvent>& events, dou
     for (const auto& e : events) {
         if (e.kind == EventKind::LesionMarked) {
             marks.push_back(&e);
-        } else if (d.fromRenderer ? e.kind == EventKind::LesionOnScreen : e.kind == EventKind::LesionInView) {
+        } else if (!d.fromRenderer && e.kind == EventKind::LesionInView) {
+            d.firstSeen.emplace(e.detail, e.time);
+        } else if (d.fromRenderer && e.kind == EventKind::LesionOnScreen) {
             d.firstSeen.emplace(e.detail, e.time);
             onScreen[e.detail].start(e.time);
         } else if (d.fromRenderer && e.kind == EventKind::LesionOffScreen) {

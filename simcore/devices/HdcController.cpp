@@ -51,12 +51,12 @@ void HdcController::tick(double now)
     }
     m_lastTick = now;
     ++m_stats.ticks;
-    const bool stopLatches = (m_device.emergencyStopPressed() || m_emergencyRequest.load()) &&
-                             m_servo.state() != ServoState::EmergencyStop;
+    const bool stopRequested = m_device.emergencyStopPressed() || m_emergencyRequest.load();
+    const bool stopLatches = stopRequested && m_servo.state() != ServoState::EmergencyStop;
     if (stopLatches) {
         m_stats.stopFromForce = m_servo.output().force;
     }
-    if (m_device.emergencyStopPressed() || m_emergencyRequest.load()) {
+    if (stopRequested) {
         m_servo.emergencyStop();
     }
     connectIfDue(now);

@@ -7,8 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <limits>
-
 #include <vector>
 
 namespace {
@@ -60,6 +60,20 @@ double ringMean(const render::RgbaImage& image, double from, double to)
     return count > 0 ? sum / count : 0.0;
 }
 
+/// Sums of red, green and blue over the central half of the image (each axis).
+std::array<double, 3> centreSums(const render::RgbaImage& image)
+{
+    std::array<double, 3> sums{};
+    for (int y = kHeight / 4; y < 3 * kHeight / 4; ++y) {
+        for (int x = kWidth / 4; x < 3 * kWidth / 4; ++x) {
+            for (int c = 0; c < 3; ++c) {
+                sums[static_cast<size_t>(c)] += image.at(x, y)[c];
+            }
+        }
+    }
+    return sums;
+}
+
 TEST(EndoscopeView, LumenIsDarkAtTheCentreOfAStraightSegment)
 {
     const Frame frame = renderTube({}, axialPose(0.02));
@@ -76,22 +90,10 @@ TEST(EndoscopeView, LumenIsDarkAtTheCentreOfAStraightSegment)
 TEST(EndoscopeView, RedOutFrameIsDominatedByRed)
 {
     // The lens 1 mm from the wall, looking straight at it.
-    render::CameraPose pose;
-    pose.position = Eigen::Vector3d(kRadius - 0.001, 0.0, 0.15);
-    pose.rotation.col(2) = Eigen::Vector3d::UnitX();  // forward
-    pose.rotation.col(1) = Eigen::Vector3d::UnitZ();  // up
-    pose.rotation.col(0) = pose.rotation.col(1).cross(pose.rotation.col(2));
-    const Frame frame = renderTube({}, pose);
+    const Frame frame = renderTube({}, colonosim::testing::facingWall(kRadius, 0.001));
     colonosim::testing::saveArtefact(frame.image, "red_out.png");
     EXPECT_DOUBLE_EQ(frame.redOut, 1.0);
-    double r = 0.0, g = 0.0, b = 0.0;
-    for (int y = kHeight / 4; y < 3 * kHeight / 4; ++y) {
-        for (int x = kWidth / 4; x < 3 * kWidth / 4; ++x) {
-            r += frame.image.at(x, y)[0];
-            g += frame.image.at(x, y)[1];
-            b += frame.image.at(x, y)[2];
-        }
-    }
+    const auto [r, g, b] = centreSums(frame.image);
     EXPECT_GT(r, 4.0 * g);
     EXPECT_GT(r, 4.0 * b);
 }
@@ -102,25 +104,15 @@ TEST(EndoscopeView, RedOutFrameIsDominatedByRed)
 // distance is 0), and a real scope there shows red-out: so does the view.
 TEST(EndoscopeView, ALensPressedThroughTheWallIsRedOutNotBlack)
 {
-    render::CameraPose pose;
-    pose.position = Eigen::Vector3d(kRadius + 0.001, 0.0, 0.15);  // 1 mm beyond the wall
-    pose.rotation.col(2) = Eigen::Vector3d::UnitX();              // forward: out of the lumen
-    pose.rotation.col(1) = Eigen::Vector3d::UnitZ();              // up
-    pose.rotation.col(0) = pose.rotation.col(1).cross(pose.rotation.col(2));
+    // 1 mm beyond the wall, facing out of the lumen.
+    const render::CameraPose pose = colonosim::testing::facingWall(kRadius, -0.001);
     const Frame blind = renderTube({}, pose);
     EXPECT_DOUBLE_EQ(blind.redOut, 0.0) << "the renderer alone sees no wall ahead";
     EXPECT_LT(ringMean(blind.image, 0.0, 0.9), 0.02) << "and draws black";
     const Frame pressed = renderTube({}, pose, 0.0, {}, 0.0);
     colonosim::testing::saveArtefact(pressed.image, "red_out_through_wall.png");
     EXPECT_DOUBLE_EQ(pressed.redOut, 1.0);
-    double r = 0.0, g = 0.0, b = 0.0;
-    for (int y = kHeight / 4; y < 3 * kHeight / 4; ++y) {
-        for (int x = kWidth / 4; x < 3 * kWidth / 4; ++x) {
-            r += pressed.image.at(x, y)[0];
-            g += pressed.image.at(x, y)[1];
-            b += pressed.image.at(x, y)[2];
-        }
-    }
+    const auto [r, g, b] = centreSums(pressed.image);
     EXPECT_GT(r, 4.0 * g);
     EXPECT_GT(r, 4.0 * b);
     EXPECT_GT(r / (kWidth * kHeight / 4.0), 40.0) << "red, not black";

@@ -68,12 +68,7 @@ double windowMean(const render::RgbaImage& image, const Eigen::Vector2d& centre,
 /// Looking at the wall (+x) from `distance` off it, up along the tube.
 render::CameraPose facingWall(double distance)
 {
-    render::CameraPose pose;
-    pose.position = Eigen::Vector3d(kRadius - distance, 0.0, 0.15);
-    pose.rotation.col(2) = Eigen::Vector3d::UnitX();
-    pose.rotation.col(1) = Eigen::Vector3d::UnitZ();
-    pose.rotation.col(0) = pose.rotation.col(1).cross(pose.rotation.col(2));
-    return pose;
+    return colonosim::testing::facingWall(kRadius, distance);
 }
 
 /// A highlight pixel: bright in every channel (the mucosa's own pink has

@@ -68,6 +68,19 @@ inline render::CameraPose axialPose(double z)
     return pose;
 }
 
+/// Looking straight at the wall of a tube of radius `radius` (forward +x)
+/// from `distance` inside it (negative: beyond the wall), 15 cm along the
+/// tube, up along the tube.
+inline render::CameraPose facingWall(double radius, double distance)
+{
+    render::CameraPose pose;
+    pose.position = Eigen::Vector3d(radius - distance, 0.0, 0.15);
+    pose.rotation.col(2) = Eigen::Vector3d::UnitX();
+    pose.rotation.col(1) = Eigen::Vector3d::UnitZ();
+    pose.rotation.col(0) = pose.rotation.col(1).cross(pose.rotation.col(2));
+    return pose;
+}
+
 inline double luminance(const render::RgbaImage& image, int x, int y)
 {
     const auto* p = image.at(x, y);

@@ -39,15 +39,15 @@ QProgressBar* gauge(const char* name, int maximum)
 /// 60 times a second: only a change is set.
 void colour(QProgressBar* bar, const char* chunk)
 {
-    const QString colour = QString::fromLatin1(chunk);
-    if (bar->property("chunkColour").toString() == colour) {
+    const QString wanted = QString::fromLatin1(chunk);
+    if (bar->property("chunkColour").toString() == wanted) {
         return;
     }
-    bar->setProperty("chunkColour", colour);
+    bar->setProperty("chunkColour", wanted);
     bar->setStyleSheet(
         QStringLiteral("QProgressBar { border: 1px solid #777; border-radius: 3px; background: "
                        "#2b2b2b; height: 14px; } QProgressBar::chunk { background: %1; }")
-            .arg(QString::fromLatin1(chunk)));
+            .arg(wanted));
 }
 }  // namespace
 

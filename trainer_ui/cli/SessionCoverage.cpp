@@ -132,24 +132,28 @@ void SessionCoverage::observe(const procedure::ProcedureLoop& loop)
     m_changed.notify_all();
 }
 
-double SessionCoverage::finalFraction()
+std::unique_lock<std::mutex> SessionCoverage::drained()
 {
     std::unique_lock lock(m_mutex);
     m_changed.wait(lock, [this] { return m_jobs.empty() && !m_busy; });
+    return lock;
+}
+
+double SessionCoverage::finalFraction()
+{
+    const std::unique_lock lock = drained();
     return m_fraction;
 }
 
 std::array<double, geometry::kNumSegments> SessionCoverage::finalBySegment()
 {
-    std::unique_lock lock(m_mutex);
-    m_changed.wait(lock, [this] { return m_jobs.empty() && !m_busy; });
+    const std::unique_lock lock = drained();
     return m_bySegment;
 }
 
 std::vector<procedure::RecordedEvent> SessionCoverage::lesionEvents()
 {
-    std::unique_lock lock(m_mutex);
-    m_changed.wait(lock, [this] { return m_jobs.empty() && !m_busy; });
+    const std::unique_lock lock = drained();
     return m_lesionEvents;
 }
 

@@ -74,6 +74,8 @@ private:
         render::CameraPose pose;
     };
     void work(const geometry::ColonAnatomy& anatomy, std::vector<std::vector<int>> lesionTriangles);
+    /// Waits until every hand-over is drawn; returns holding m_mutex.
+    std::unique_lock<std::mutex> drained();
 
     double m_interval = 0.1;  ///< s simulated between hand-overs (RenderParameters::coverageInterval)
     double m_next = 0.0;      ///< s simulated: the next hand-over
