@@ -112,7 +112,7 @@ int main(int argc, char** argv)
         const procedure::InputSample wanted = expert.next(loop);
         hand.publish(wanted);
         hdcInput.recordConnection(loop);
-        loop.step(hdcInput.next(loop));
+        loop.step(hdcInput.next(loop), &hdcInput);
         if (!loop.lumen().contacts().empty() && loop.lumen().contacts().back().depth > diameter) {
             ++outside;
             ++outsideBy10s[static_cast<size_t>(loop.time() / 10.0)];

@@ -46,13 +46,20 @@ void HdcOperator::recordConnection(procedure::ProcedureLoop& loop)
     }
 }
 
+void HdcOperator::handleLoadReady(double handleForce, double handleTorque)
+{
+    m_server.publishLoad(HandleCommand{handleForce, handleTorque}, m_inputTime);
+    m_answered = true;
+}
+
 procedure::InputSample HdcOperator::next(const procedure::ProcedureLoop& loop)
 {
-    if (m_sentOnce || loop.time() > 0.0) {
+    if (!m_answered && (m_sentOnce || loop.time() > 0.0)) {
         // The load of the step just taken, for the input it was computed from.
         m_server.publishLoad(HandleCommand{loop.outputs().handleForce, loop.outputs().handleTorque},
                              m_inputTime);
     }
+    m_answered = false;
     m_sentOnce = true;
     const double loopStep = loop.trace().loopStep;
     std::optional<StampedInput> in;

@@ -16,6 +16,12 @@
 /// when the device falls silent for kFrameWait, the loop steps on the wall
 /// clock, holding the last input. A loop slower than the device takes the
 /// newest frame (frames in between are the device's, not the session's).
+///
+/// The host passes the operator to ProcedureLoop::step() as its
+/// HandleLoadSink: the load then goes to the device as soon as the scope's
+/// part of the step has it, before the colon's substeps and the recording.
+/// A host that does not pass it is answered at the next call of next(),
+/// after the whole step.
 
 #include "simcore/devices/HdcServer.h"
 #include "simcore/procedure/Operator.h"
@@ -24,7 +30,7 @@
 
 namespace colonosim::devices {
 
-class HdcOperator final : public procedure::Operator {
+class HdcOperator final : public procedure::Operator, public procedure::HandleLoadSink {
 public:
     HdcOperator(int port, const HapticParameters& parameters, bool anyInterface = false)
         : m_server(port, parameters, anyInterface)
@@ -33,6 +39,8 @@ public:
     /// Records connection changes in `loop`'s session (call before each step).
     void recordConnection(procedure::ProcedureLoop& loop);
     procedure::InputSample next(const procedure::ProcedureLoop& loop) override;
+    /// Sends the step's load to the device, for the input it answers.
+    void handleLoadReady(double handleForce, double handleTorque) override;
     [[nodiscard]] bool finished() const override { return false; }
     [[nodiscard]] bool keepsTime() const override { return true; }
 
@@ -58,6 +66,7 @@ private:
     bool m_announced = false;  ///< the connection is in the record (once its first frame named the device)
     long m_framesAtConnect = 0;
     bool m_sentOnce = false;
+    bool m_answered = false;  ///< the last step's load went out early (handleLoadReady)
     long m_frames = 0;
     std::string m_device = "unknown";
 };

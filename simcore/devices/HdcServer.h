@@ -51,6 +51,8 @@ public:
     std::optional<StampedInput> waitForInput(double timeout);
     /// Sends the handle load computed from the input frame of time `inputTime`.
     void publishLoad(const HandleCommand& load, double inputTime);
+    /// Loads published so far (read on the thread that publishes them).
+    [[nodiscard]] long loadsPublished() const { return m_loadSequence; }
 
     [[nodiscard]] bool connected() const { return m_connected.load(); }
     [[nodiscard]] int connections() const { return m_connections.load(); }

@@ -208,7 +208,7 @@ void ProcedureLoop::solveContact(const Eigen::Matrix3Xd& scope, int addedAtBase,
     m_scope.step();
 }
 
-const ProcedureOutputs& ProcedureLoop::step(const InputSample& input)
+const ProcedureOutputs& ProcedureLoop::step(const InputSample& input, HandleLoadSink* early)
 {
     const std::string rejection = validateInput(input);
     if (rejection.empty()) {
@@ -233,6 +233,10 @@ const ProcedureOutputs& ProcedureLoop::step(const InputSample& input)
     }
 
     applyContact();  // contact is resolved inside the scope's chain iterations
+    if (early != nullptr) {
+        const scope::HandleLoad load = m_scope.handleLoad();
+        early->handleLoadReady(-load.axialForce, load.axialTorque);
+    }
     m_simulation->advance();
     m_time += dt;
     ++m_steps;

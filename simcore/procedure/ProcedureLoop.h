@@ -81,14 +81,27 @@ struct ProcedureOutputs {
     scope::TipPose tip;
 };
 
+/// Takes a step's handle load the moment the scope's chain solve has it,
+/// before the colon's substeps and the recording (steps 4-5 below): a
+/// haptic device is answered within the scope's part of the step, not the
+/// whole step. The values are those outputs() holds after the step.
+class HandleLoadSink {
+public:
+    virtual ~HandleLoadSink() = default;
+    /// N along the insertion direction (+ resists insertion), N m about the shaft.
+    virtual void handleLoadReady(double handleForce, double handleTorque) = 0;
+};
+
 class ProcedureLoop {
 public:
     /// Builds the colon body from `anatomy` (which must outlive the loop) and
     /// the scope at the anus. Throws ParameterError for invalid settings.
     ProcedureLoop(const geometry::ColonAnatomy& anatomy, const ProcedureSettings& settings);
 
-    /// One loop step; never throws.
-    const ProcedureOutputs& step(const InputSample& input);
+    /// One loop step; never throws. `early`, when given, gets the step's
+    /// handle load as soon as the scope has it (HandleLoadSink); it only
+    /// reads, so the step is the same with or without it.
+    const ProcedureOutputs& step(const InputSample& input, HandleLoadSink* early = nullptr);
 
     /// Records that input device `name` connected (or disconnected) now.
     void noteDevice(const std::string& name, bool connected)

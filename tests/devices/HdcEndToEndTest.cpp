@@ -77,7 +77,7 @@ TEST(HdcEndToEnd, TheExpertDrivesTheLoopThroughTheSimulatedDeviceAndTheHdcAndSur
         const procedure::InputSample wanted = expert.next(loop);
         hand.publish(wanted);
         hdc.recordConnection(loop);
-        loop.step(hdc.next(loop));
+        loop.step(hdc.next(loop), &hdc);
         if (hdc.server().connected() && step > 100) {
             largestLag = std::max(largestLag, std::abs(wanted.insertion - loop.lastFrame().input.insertion));
         }

@@ -57,7 +57,7 @@ TEST(HdcPacing, TheLoopStepsOnEachDeviceFrameAndNeverRunsAheadOfTheHand)
     double mostAhead = -1e9;  // s: simulated time minus wall time since the start
     for (int s = 0; s < kSteps; ++s) {
         hdc.recordConnection(loop);
-        loop.step(hdc.next(loop));
+        loop.step(hdc.next(loop), &hdc);
         mostAhead = std::max(mostAhead, (loop.time() - simulatedAtStart) - secondsSince(start));
     }
     const double wall = secondsSince(start);
@@ -86,13 +86,35 @@ TEST(HdcPacing, WithNoDeviceTheLoopStepsOnTheWallClock)
     const Clock::time_point start = Clock::now();
     for (int s = 0; s < kSteps; ++s) {
         hdc.recordConnection(loop);
-        loop.step(hdc.next(loop));
+        loop.step(hdc.next(loop), &hdc);
     }
     // The held scope's session still takes its real time: 300 steps of 1 ms
     // take at least 299 ms (the first step starts the schedule).
     EXPECT_GE(secondsSince(start), (kSteps - 1) * loop.trace().loopStep - 1e-4);
     EXPECT_EQ(hdc.framesUsed(), 0);
     EXPECT_DOUBLE_EQ(loop.lastFrame().input.insertion, 0.0);
+}
+
+// A host that passes the operator to step() as its HandleLoadSink has each
+// step's load sent within the step (the device is answered before the
+// colon's substeps); one that does not has it sent when it next asks for
+// input. Either way each step's load goes out once.
+TEST(HdcPacing, TheLoadGoesOutWithinTheStepWhenTheHostPassesTheSinkAndOnceEitherWay)
+{
+    HdcOperator early(0, HapticParameters{});
+    HdcOperator late(0, HapticParameters{});
+    procedure::ProcedureLoop earlyLoop(defaultColon(), procedure::ProcedureSettings{});
+    procedure::ProcedureLoop lateLoop(defaultColon(), procedure::ProcedureSettings{});
+    for (long s = 1; s <= 100; ++s) {
+        earlyLoop.step(early.next(earlyLoop), &early);
+        lateLoop.step(late.next(lateLoop));
+        EXPECT_EQ(early.server().loadsPublished(), s) << "sent within step " << s;
+        EXPECT_EQ(late.server().loadsPublished(), s - 1) << "sent when step " << s + 1 << " asks for input";
+    }
+    (void)early.next(earlyLoop);
+    (void)late.next(lateLoop);
+    EXPECT_EQ(early.server().loadsPublished(), 100) << "not sent twice";
+    EXPECT_EQ(late.server().loadsPublished(), 100);
 }
 
 }  // namespace

@@ -82,6 +82,50 @@ TEST(ProcedureLoop, ReplayIsBitIdentical)
     EXPECT_FALSE(first.recording().canonicalText().empty());
 }
 
+// A HandleLoadSink gets each step's handle load before the step ends (the
+// loop's clock has not moved yet: the colon's substeps and the recording are
+// still to come), with the values outputs() then holds; and the step is the
+// same with a sink as without one, bit for bit.
+class EarlyLoads final : public procedure::HandleLoadSink {
+public:
+    explicit EarlyLoads(const ProcedureLoop& loop) : m_loop(loop) {}
+    void handleLoadReady(double handleForce, double handleTorque) override
+    {
+        times.push_back(m_loop.time());
+        forces.push_back(handleForce);
+        torques.push_back(handleTorque);
+    }
+    std::vector<double> times;
+    std::vector<double> forces;
+    std::vector<double> torques;
+
+private:
+    const ProcedureLoop& m_loop;
+};
+
+TEST(ProcedureLoop, AHandleLoadSinkIsAnsweredBeforeTheStepEndsWithTheStepsLoad)
+{
+    ProcedureLoop plain(defaultColon(), ProcedureSettings{});
+    ProcedureLoop answered(defaultColon(), ProcedureSettings{});
+    EarlyLoads sink(answered);
+    procedure::ScriptedOperator novice(procedure::noviceStyle());
+    int pushed = 0;
+    for (int s = 0; s < 3000; ++s) {
+        const InputSample input = novice.next(plain);
+        plain.step(input);
+        const double before = answered.time();
+        answered.step(input, &sink);
+        ASSERT_EQ(sink.times.size(), static_cast<size_t>(s) + 1);
+        EXPECT_EQ(sink.times.back(), before) << "answered within step " << s;
+        EXPECT_LT(sink.times.back(), answered.time());
+        EXPECT_EQ(sink.forces.back(), answered.outputs().handleForce) << "step " << s;
+        EXPECT_EQ(sink.torques.back(), answered.outputs().handleTorque) << "step " << s;
+        pushed += std::abs(sink.forces.back()) > 0.1 ? 1 : 0;
+    }
+    EXPECT_GT(pushed, 100) << "the novice's push loads the handle";
+    EXPECT_EQ(answered.recording().canonicalText(), plain.recording().canonicalText());
+}
+
 // NaN and huge device input is refused at the boundary (an input_rejected
 // event names the field), the loop keeps the last valid sample, and nothing
 // downstream sees the bad value.

@@ -159,7 +159,7 @@ void SimulationRunner::run(std::stop_token stop)
         if (hdc != nullptr) {
             hdc->recordConnection(loop);
         }
-        loop.step(m_driver->next(loop));
+        loop.step(m_driver->next(loop), hdc);  // the HDC is answered as soon as the scope has its load
         if (m_coverage) {
             m_coverage->observe(loop);
         }

@@ -193,7 +193,7 @@ int runProcedure(std::span<char* const> args)
         if (hdc != nullptr) {
             hdc->recordConnection(loop);
         }
-        loop.step(driver->next(loop));
+        loop.step(driver->next(loop), hdc);  // the HDC is answered as soon as the scope has its load
         if (coverage) {
             coverage->observe(loop);
         }
