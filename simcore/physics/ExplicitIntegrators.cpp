@@ -32,7 +32,7 @@ void SymplecticEuler::step(TissueBody& body, double h)
     sizeLike(m_f, body);
     Positions& x = body.positions();
     Velocities& v = body.velocities();
-    body.computeForces(x, v, m_f);
+    body.computeIntegratedForces(x, v, m_f);  // it reads the integrated nodes' forces only
     const Eigen::VectorXd& invM = body.inverseMasses();
     for (const int i : body.integratedNodes()) {
         v.col(i) += (h * invM[i]) * m_f.col(i);

@@ -25,6 +25,7 @@ int SpringSet::add(int i, int j, double restLength, double stiffness, double dam
     m_k.push_back(stiffness);
     m_c.push_back(damping);
     m_family.push_back(family);
+    m_strainStale = true;
     const int s = numSprings() - 1;
     const auto awake = [this](int node) {
         return m_awake.empty() || static_cast<size_t>(node) >= m_awake.size() ||
@@ -57,6 +58,7 @@ void SpringSet::remove(int s)
     m_k.pop_back();
     m_c.pop_back();
     m_family.pop_back();
+    m_strainStale = true;
     onActiveSetChanged(m_awake);
 }
 
@@ -112,10 +114,39 @@ void SpringSet::repack()
 
 double SpringSet::maxTensileStrain(const Positions& x, SpringFamily family) const
 {
+    if (m_strainStale || family != m_strainFamily) {
+        m_strainSprings.clear();
+        for (size_t e = 0; e < m_i.size(); ++e) {
+            if (m_family[e] == family && m_rest[e] > 0.0) {
+                m_strainSprings.push_back({m_i[e], m_j[e], m_rest[e], 1.0 / (m_rest[e] * m_rest[e])});
+            }
+        }
+        m_strainFamily = family;
+        m_strainStale = false;
+        m_stretch2.resize(m_strainSprings.size());
+    }
+    // The strain (l - L) / L rises with (l / L)^2, which needs neither a
+    // square root nor a division: find the largest squared stretch first,
+    // then take the strain itself, as before, of the springs within 1e-12
+    // of it. Rounding moves the squared stretch by about 1e-15 of itself,
+    // so the spring of largest strain is among them, and the result is the
+    // strain formula's bit for bit.
+    double most = 0.0;
+    for (size_t e = 0; e < m_strainSprings.size(); ++e) {
+        const StrainSpring& p = m_strainSprings[e];
+        m_stretch2[e] = (x.col(p.j) - x.col(p.i)).squaredNorm() * p.invRest2;
+        most = std::max(most, m_stretch2[e]);
+    }
+    constexpr double kWithin = 1e-12;
+    if (!(most >= 1.0 - kWithin)) {
+        return 0.0;  // none stretched (and no strain above 0 within rounding)
+    }
+    const double candidate = most * (1.0 - kWithin);
     double largest = 0.0;
-    for (size_t e = 0; e < m_i.size(); ++e) {
-        if (m_family[e] == family && m_rest[e] > 0.0) {
-            largest = std::max(largest, ((x.col(m_j[e]) - x.col(m_i[e])).norm() - m_rest[e]) / m_rest[e]);
+    for (size_t e = 0; e < m_strainSprings.size(); ++e) {
+        if (m_stretch2[e] >= candidate) {
+            const StrainSpring& p = m_strainSprings[e];
+            largest = std::max(largest, ((x.col(p.j) - x.col(p.i)).norm() - p.rest) / p.rest);
         }
     }
     return largest;

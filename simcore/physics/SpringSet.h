@@ -97,6 +97,18 @@ private:
     /// threads at once (each procedure loop owns its colon).
     mutable SpringGather m_gather;
     mutable bool m_gatherStale = true;
+    /// maxTensileStrain()'s springs (those of its family with a length), in
+    /// the springs' order, rebuilt when the springs or the family asked for
+    /// change: the loop asks for the wall's strain every step.
+    struct StrainSpring {
+        int i, j;
+        double rest;      ///< m
+        double invRest2;  ///< 1/m^2
+    };
+    mutable std::vector<StrainSpring> m_strainSprings;
+    mutable std::vector<double> m_stretch2;  ///< per strain spring: (l / L)^2 as rounded, scratch
+    mutable SpringFamily m_strainFamily = SpringFamily::Structural;
+    mutable bool m_strainStale = true;
     void repack();
     [[nodiscard]] PackedSpring packed(size_t e) const;
     /// One active spring of the frozen system: its block of h D + h^2 K+ is

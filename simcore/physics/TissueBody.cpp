@@ -113,6 +113,16 @@ void TissueBody::computeForces(const Positions& x, const Velocities& v, Forces& 
     }
 }
 
+void TissueBody::computeIntegratedForces(const Positions& x, const Velocities& v, Forces& f) const
+{
+    for (const int i : m_integrated) {
+        f.col(i) = m_external.col(i);
+    }
+    for (const auto& term : m_terms) {
+        term->addForceAndDamping(x, v, f);
+    }
+}
+
 void TissueBody::stiffnessProduct(const Positions& x, const Eigen::Matrix3Xd& dx, Eigen::Matrix3Xd& df,
                                   bool definite) const
 {

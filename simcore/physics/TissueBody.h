@@ -56,6 +56,12 @@ public:
 
     /// f = sum of all force terms (elastic + damping) + external loads; zero on fixed nodes.
     void computeForces(const Positions& x, const Velocities& v, Forces& f) const;
+    /// The same sums at the integrated nodes, for an integrator that reads
+    /// no other column: f (sized for every node) gets the external forces
+    /// only at the integrated nodes before the terms add theirs, so the
+    /// columns it reads are those of computeForces() bit for bit and the
+    /// sleeping nodes' columns (which the terms may add to) are not reset.
+    void computeIntegratedForces(const Positions& x, const Velocities& v, Forces& f) const;
     /// df = K dx (+ damping D dv when dv given) summed over terms with a
     /// symmetric Jacobian; zero rows on fixed nodes.
     void stiffnessProduct(const Positions& x, const Eigen::Matrix3Xd& dx, Eigen::Matrix3Xd& df,

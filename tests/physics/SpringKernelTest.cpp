@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
 #include <cstdint>
 #include <random>
@@ -155,6 +156,59 @@ TEST_F(SpringKernel, ChangedStiffnessDampingAndRemovalAreRepacked)
     springs.onActiveSetChanged(awake);
     springs.add(3, 4, 0.02, 10.0, 0.01);  // awake through node 4
     expectSameBits(transcription(springs, awake, x, v), kernel());
+}
+
+/// The largest tensile strain of `family`, spring after spring, as SpringSet.h states it.
+double strainTranscription(const SpringSet& springs, const Positions& x, SpringFamily family)
+{
+    double largest = 0.0;
+    for (int s = 0; s < springs.numSprings(); ++s) {
+        if (springs.family(s) == family && springs.restLength(s) > 0.0) {
+            const double l = (x.col(springs.nodeB(s)) - x.col(springs.nodeA(s))).norm();
+            largest = std::max(largest, (l - springs.restLength(s)) / springs.restLength(s));
+        }
+    }
+    return largest;
+}
+
+// maxTensileStrain() screens the springs by their squared stretch and takes
+// the strain only of those near the largest: it gives the strain formula's
+// bits, for each family, after the springs change, when two springs tie
+// within rounding, and 0 when nothing is stretched.
+TEST_F(SpringKernel, TheLargestTensileStrainIsTheFormulasBitForBit)
+{
+    for (const SpringFamily family : {SpringFamily::Structural, SpringFamily::Bending}) {
+        const double expected = strainTranscription(springs, x, family);
+        EXPECT_GT(expected, 0.1);
+        EXPECT_EQ(std::bit_cast<std::uint64_t>(springs.maxTensileStrain(x, family)),
+                  std::bit_cast<std::uint64_t>(expected));
+    }
+    EXPECT_EQ(springs.maxTensileStrain(x, SpringFamily::Shear), 0.0) << "no shear springs";
+
+    // Two springs stretched alike to within rounding, above every other one:
+    // the screen keeps both and the formula picks, as it did alone.
+    const Eigen::Vector3d along(0.3, -0.2, 0.9);
+    x.col(10) = Eigen::Vector3d::Zero();
+    x.col(11) = along;
+    x.col(12) = Eigen::Vector3d(0.01, 0.0, 0.0);
+    x.col(13) = x.col(12) + along * (1.0 + 1e-15);
+    const double rest = 0.25 * along.norm();
+    springs.add(10, 11, rest, 10.0, 0.0);
+    springs.add(12, 13, rest, 10.0, 0.0);
+    const double tied = strainTranscription(springs, x, SpringFamily::Structural);
+    EXPECT_GT(tied, 2.9);
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(springs.maxTensileStrain(x, SpringFamily::Structural)),
+              std::bit_cast<std::uint64_t>(tied));
+    springs.remove(springs.numSprings() - 1);
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(springs.maxTensileStrain(x, SpringFamily::Structural)),
+              std::bit_cast<std::uint64_t>(strainTranscription(springs, x, SpringFamily::Structural)));
+
+    // Nothing stretched: every spring at or below its length.
+    SpringSet slack;
+    slack.add(0, 1, 1.01 * (x.col(1) - x.col(0)).norm(), 10.0, 0.0);
+    slack.add(2, 3, (x.col(3) - x.col(2)).norm(), 10.0, 0.0);
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(slack.maxTensileStrain(x, SpringFamily::Structural)),
+              std::bit_cast<std::uint64_t>(strainTranscription(slack, x, SpringFamily::Structural)));
 }
 
 }  // namespace
