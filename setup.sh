@@ -15,7 +15,7 @@ cd "$(dirname "$(readlink -f "${BASH_SOURCE[0]}")")"
 # libopenigtlink-dev: the OpenIGTLink protocol between the Haptic Device Controller and the simulator.
 # libsdl2-dev: gamepads, through SDL2's game-controller API.
 PACKAGES=(
-    build-essential cmake ninja-build pkg-config git
+    build-essential cmake ninja-build pkg-config git ccache
     libeigen3-dev libbullet-dev libsqlite3-dev
     qt6-base-dev libqt6opengl6-dev libqt6sql6-sqlite qt6-charts-dev qt6-svg-dev
     libtinyxml2-dev libosmesa6-dev libassimp-dev zlib1g-dev nlohmann-json3-dev
@@ -59,7 +59,9 @@ Set up this Debian 12 machine for colonosim (system packages via apt-get), build
 
 Packages are installed only when missing (checked with dpkg-query). The build directory is
 configured once (Release, Ninja) and then built incrementally with $(nproc) jobs;
-set COLONOSIM_JOBS to change that.
+set COLONOSIM_JOBS to change that. Compiled objects are kept by ccache (one of the packages), so
+a fresh clone compiles only what changed since an earlier build on the same machine;
+COLONOSIM_CCACHE=0 configures new build directories without it.
 EOF
 }
 
@@ -97,6 +99,20 @@ ensure_packages()
     "${as_root[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
 }
 
+# The compiler cache: ccache keeps compiled objects between builds, so a fresh clone (CI's) or
+# a second build directory compiles only what changed since any earlier build on this machine.
+# Paths under the clone are rewritten relative to it (CCACHE_BASEDIR) and the working directory
+# is left out of the hash (CCACHE_NOHASHDIR: the sanitizer build's line tables would otherwise
+# tie each object to its clone's path), so clones at different paths share the cache.
+# COLONOSIM_CCACHE=0 builds without it.
+export CCACHE_BASEDIR="$PWD"
+export CCACHE_NOHASHDIR=1
+
+COMPILER_CACHE=()
+if [[ "${COLONOSIM_CCACHE:-1}" != 0 ]]; then
+    COMPILER_CACHE=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+fi
+
 # configure_and_build DIR [CMAKE ARGS...]: configure DIR once, then build it incrementally.
 configure_and_build()
 {
@@ -104,7 +120,9 @@ configure_and_build()
     shift
     if [[ ! -f "$dir/CMakeCache.txt" || ! -f "$dir/build.ninja" ]]; then
         log "configuring $dir"
-        cmake -S . -B "$dir" -G Ninja "$@"
+        local -a cache=()
+        command -v ccache >/dev/null && cache=("${COMPILER_CACHE[@]}")
+        cmake -S . -B "$dir" -G Ninja "${cache[@]}" "$@"
     fi
 
     local out
