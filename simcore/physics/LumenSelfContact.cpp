@@ -93,9 +93,35 @@ LumenSelfContact::Separation LumenSelfContact::separation(const Pair& pair) cons
 
 void LumenSelfContact::computeCentres(const Positions& x) const
 {
+    if (!m_allRingsMove && x.data() == m_centresOf && x.cols() == m_centresCols) {
+        for (const int ring : m_movingRings) {
+            m_centre[static_cast<size_t>(ring)] = ringMean(ring, x);
+        }
+        return;
+    }
     for (size_t i = 0; i < m_rings.size(); ++i) {
         m_centre[i] = ringMean(static_cast<int>(i), x);
     }
+    m_centresOf = x.data();
+    m_centresCols = x.cols();
+}
+
+void LumenSelfContact::onActiveSetChanged(const std::vector<std::uint8_t>& awake)
+{
+    m_movingRings.clear();
+    for (size_t i = 0; i < m_rings.size(); ++i) {
+        const std::vector<int>& nodes = m_rings[i].nodes;
+        const bool moves = std::any_of(nodes.begin(), nodes.end(), [&](int node) {
+            return static_cast<size_t>(node) >= awake.size() || awake[static_cast<size_t>(node)] != 0;
+        });
+        if (moves) {
+            m_movingRings.push_back(static_cast<int>(i));
+        }
+    }
+    // The next evaluation takes every centre afresh: nodes that slept until
+    // now may have been woken (and may move from here on).
+    m_allRingsMove = awake.empty();
+    m_centresOf = nullptr;
 }
 
 void LumenSelfContact::updateCentres(const Positions& x) const

@@ -73,6 +73,11 @@ public:
     /// Its pairs come and go with the state: not probed by the static
     /// solver's preconditioner.
     [[nodiscard]] bool couplingsDeclared() const override { return false; }
+    /// Rings with an awake node are the ones whose centres move: between two
+    /// changes of the awake set, an evaluation at the same positions matrix
+    /// recomputes only their centres (a sleeping node does not move, so the
+    /// other centres are those of the last full pass, bit for bit).
+    void onActiveSetChanged(const std::vector<std::uint8_t>& awake) override;
 
     [[nodiscard]] int numRings() const { return static_cast<int>(m_rings.size()); }
     /// Ring pairs that overlap at x beyond their rest overlap, and the
@@ -116,6 +121,11 @@ private:
     mutable std::vector<Eigen::Vector3d> m_listCentre;  ///< centres when the list was built
     mutable std::vector<Pair> m_candidates;
     mutable bool m_listBuilt = false;
+    std::vector<int> m_movingRings;  ///< rings with at least one awake node
+    bool m_allRingsMove = true;      ///< no active region, or it changed since the last full pass
+    /// The positions matrix (its data and size) of the last full pass.
+    mutable const double* m_centresOf = nullptr;
+    mutable Eigen::Index m_centresCols = -1;
 };
 
 /// The rings of a procedural colon's physics mesh: runs of consecutive nodes

@@ -8,6 +8,7 @@
 #include "simcore/physics/StaticSolver.h"
 #include "simcore/physics/TissueSimulation.h"
 #include "tests/physics/ColonRings.h"
+#include "tests/physics/SameBits.h"
 
 #include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
@@ -188,6 +189,39 @@ TEST(LumenSelfContact, APairThatClosesLaterIsFoundWhenTheRingsMove)
     two.x.middleCols(kPerRing, kPerRing).colwise() -= Eigen::Vector3d(0.175, 0.0, 0.0);
     term.addForce(two.x, f);
     EXPECT_NEAR(ringSum(f, 1).x(), kStiffness * (2.0 * kRadius - 0.025 - 0.0005), 1e-9);
+}
+
+// With an active region, an evaluation at the same positions takes again
+// only the centres of rings with an awake node: the forces are those of a
+// term that takes every centre, bit for bit, as the awake ring moves, and
+// again after the sleeping ring is woken and moves too.
+TEST(LumenSelfContact, OnlyRingsWithAnAwakeNodeAreTakenAgainAndTheForcesStayTheSame)
+{
+    TwoRings two(Eigen::Vector3d(0.025, 0.0, 0.0), 0.5);
+    const LumenSelfContact everyCentre(two.rings, kStiffness, far(two));
+    LumenSelfContact awakeCentres(two.rings, kStiffness, far(two));
+    std::vector<std::uint8_t> awake(2 * kPerRing, 1);
+    for (int node = 0; node < kPerRing; ++node) {
+        awake[static_cast<size_t>(node)] = 0;  // ring 0 sleeps
+    }
+    awakeCentres.onActiveSetChanged(awake);
+    const auto sameForces = [&] {
+        Forces expected = Forces::Zero(3, two.x.cols());
+        Forces actual = Forces::Zero(3, two.x.cols());
+        everyCentre.addForce(two.x, expected);
+        awakeCentres.addForce(two.x, actual);
+        EXPECT_GT(expected.norm(), 0.0) << "the rings overlap";
+        return testing::differingBits(expected, actual);
+    };
+    EXPECT_EQ(sameForces(), 0);
+    for (int step = 0; step < 5; ++step) {  // ring 1 (awake) pushes further in
+        two.x.middleCols(kPerRing, kPerRing).colwise() -= Eigen::Vector3d(0.001, 0.0003, 0.0);
+        EXPECT_EQ(sameForces(), 0) << "step " << step;
+    }
+    awake.assign(awake.size(), 1);  // ring 0 wakes, and moves
+    awakeCentres.onActiveSetChanged(awake);
+    two.x.leftCols(kPerRing).colwise() += Eigen::Vector3d(0.0, 0.002, 0.001);
+    EXPECT_EQ(sameForces(), 0);
 }
 
 TEST(LumenSelfContact, TheDefaultColonHasOneBallPerRingAndNoOverlapAtRest)
