@@ -14,6 +14,7 @@ int Mesentery::add(int node, const Eigen::Vector3d& root, double restLength, con
     m_node.push_back(node);
     m_root.push_back(root);
     m_rest.push_back(restLength);
+    m_invRest2.push_back(1.0 / (restLength * restLength));
     m_law.push_back(law);
     m_awake.append(numTethers() - 1, node);
     return numTethers() - 1;
@@ -45,9 +46,26 @@ double Mesentery::tangentStiffness(const Law& law, double restLength, double del
 
 double Mesentery::maxStrain(const Positions& x) const
 {
+    // As SpringSet::maxTensileStrain(): screen the tethers by their squared
+    // stretch (l / L)^2, no square root nor division, then take the strain
+    // (l - L) / L itself of those within 1e-12 of the largest; the result is
+    // the strain formula's over every tether, bit for bit.
+    m_stretch2.resize(m_node.size());
+    double most = 0.0;
+    for (size_t t = 0; t < m_node.size(); ++t) {
+        m_stretch2[t] = (x.col(m_node[t]) - m_root[t]).squaredNorm() * m_invRest2[t];
+        most = std::max(most, m_stretch2[t]);
+    }
+    constexpr double kWithin = 1e-12;
+    if (!(most >= 1.0 - kWithin)) {
+        return 0.0;  // every tether slack (no strain above 0 within rounding)
+    }
+    const double candidate = most * (1.0 - kWithin);
     double strain = 0.0;
     for (size_t t = 0; t < m_node.size(); ++t) {
-        strain = std::max(strain, ((x.col(m_node[t]) - m_root[t]).norm() - m_rest[t]) / m_rest[t]);
+        if (m_stretch2[t] >= candidate) {
+            strain = std::max(strain, ((x.col(m_node[t]) - m_root[t]).norm() - m_rest[t]) / m_rest[t]);
+        }
     }
     return strain;
 }

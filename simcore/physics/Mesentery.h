@@ -56,8 +56,10 @@ private:
     std::vector<int> m_node;
     std::vector<Eigen::Vector3d> m_root;
     std::vector<double> m_rest;
+    std::vector<double> m_invRest2;  ///< 1 / m_rest^2, 1/m^2 (maxStrain's screen)
     std::vector<Law> m_law;
-    AwakeEntries m_awake;  ///< tethers whose node is awake (the force sums)
+    mutable std::vector<double> m_stretch2;  ///< maxStrain's scratch: (l / L)^2 per tether
+    AwakeEntries m_awake;                    ///< tethers whose node is awake (the force sums)
 };
 
 }  // namespace colonosim::physics
