@@ -95,8 +95,8 @@ TEST(HaustralWall, AStraightPushIntoARedundantSigmoidFormsAnNLoopOnlyWhenTheWall
 // colon. Unguarded (scope.maxNodeStep 1 m) the chain's solve
 // under the contact loads there swings the tip 5-60 mm a step from 20.7 s on,
 // and at 20.859 s one solve throws it 319 mm: the shaft leaves the colon
-// while no wall node moves more than 14 mm (a per-step probe; README, known
-// limits). With the guard at 10 mm the shaft stays inside. The handle force
+// while no wall node moves more than 14 mm (a per-step probe;
+// docs/known-limits.md). With the guard at 10 mm the shaft stays inside. The handle force
 // is bounded by real colonoscopists' peak push, 43 N (Appleyard et al.,
 // Gastrointest Endosc 2000), not by the haptic device's 25 N: the device
 // clamps what it renders, and a push on a loop this size is among the

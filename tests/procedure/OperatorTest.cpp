@@ -103,7 +103,7 @@ TEST(ExpertOperator, ReachesTheSigmoidDescendingJunctionInTwentySecondsAndPasses
 // has reached the flexure (expertStyle()) the shaft gives at 56 s, the tip
 // comes back into the descending colon and then follows the shaft 1:1 into
 // the transverse colon, and on to the cecum. (The way back is not yet
-// whole: see the README's known limits.)
+// whole: see docs/known-limits.md.)
 TEST(ExpertOperator, ReachesTheCecumOfTheDefaultColonWithItsTipInsideTheLumen)
 {
     constexpr int kMaxSteps = 150000;  // 150 s at 1 kHz

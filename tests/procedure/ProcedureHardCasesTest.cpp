@@ -182,14 +182,14 @@ TEST(Adhesions, AnInsertionPushedAgainstAFixedAdhesionStaysStable)
 // may grow by the way a node came in (ContactCoupling.h), the wall holds the
 // hooked tip while the handle turns: 1.76 N m at most in the curl (0.895 N m
 // before that, with the tip slipping) and 0.69 N m while twisted. Not
-// asserted, and in the README's known limits: while the hooked tip is pushed
+// asserted, and in docs/known-limits.md: while the hooked tip is pushed
 // on, it is driven up to 41.2 mm into the wall for 316 steps, as a blind push
 // against a bend does. The turning beyond the path is not a curl of the
 // shaft: its own coronal turning there goes from -7.05 rad (following the redundant sigmoid's
 // clockwise spiral at rest, -7.1 rad) to about -0.8 rad within 0.5 s, 18 s
 // in, and stays there: the push straightens the sigmoid's spiral, or its
-// projection flips by 2 pi where the shaft is seen end-on (README, known
-// limits). No curl is read (no alpha loop), rightly. The shaft pushed in
+// projection flips by 2 pi where the shaft is seen end-on
+// (docs/known-limits.md). No curl is read (no alpha loop), rightly. The shaft pushed in
 // behind the held tip bows the redundant sigmoid on its mesocolon, and the
 // colon moves with it: the loop is read from the insertion against the tip's
 // place along the colon (LoopDetector's stored shaft), an N loop in the

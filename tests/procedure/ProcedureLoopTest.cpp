@@ -327,7 +327,7 @@ Penetration measurePenetration(const ProcedureLoop& loop, contact::LumenTube& tu
 // deep would put the scope's axis outside the 16 mm lumen radius plus the
 // wall), the tip is carried past the flexure, and over the last 0.1 s of a
 // 0.3 s hold the nodes sit within the penalty's depth (median). Not met, and
-// in the README's known limits: while the shaft snaps round the flexure a
+// in docs/known-limits.md: while the shaft snaps round the flexure a
 // node goes up to 25 mm into the wall for tens of milliseconds, and at rest
 // the contact still chatters by a few millimetres.
 TEST(ProcedureLoop, AFastStraightPushNeverTunnelsThroughTheWall)
