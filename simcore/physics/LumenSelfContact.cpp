@@ -51,6 +51,7 @@ LumenSelfContact::LumenSelfContact(std::vector<Ring> rings, double stiffness, co
     }
     m_centre.resize(m_rings.size());
     m_listCentre.resize(m_rings.size());
+    onActiveSetChanged({});  // every ring moves until an active region says otherwise
     computeCentres(rest);
     for (size_t i = 0; i < m_rings.size(); ++i) {
         for (size_t j = i + 1; j < m_rings.size(); ++j) {
@@ -93,7 +94,7 @@ LumenSelfContact::Separation LumenSelfContact::separation(const Pair& pair) cons
 
 void LumenSelfContact::computeCentres(const Positions& x) const
 {
-    if (!m_allRingsMove && x.data() == m_centresOf && x.cols() == m_centresCols) {
+    if (x.data() == m_centresOf && x.cols() == m_centresCols) {
         for (const int ring : m_movingRings) {
             m_centre[static_cast<size_t>(ring)] = ringMean(ring, x);
         }
@@ -120,7 +121,6 @@ void LumenSelfContact::onActiveSetChanged(const std::vector<std::uint8_t>& awake
     }
     // The next evaluation takes every centre afresh: nodes that slept until
     // now may have been woken (and may move from here on).
-    m_allRingsMove = awake.empty();
     m_centresOf = nullptr;
 }
 

@@ -121,8 +121,7 @@ private:
     mutable std::vector<Eigen::Vector3d> m_listCentre;  ///< centres when the list was built
     mutable std::vector<Pair> m_candidates;
     mutable bool m_listBuilt = false;
-    std::vector<int> m_movingRings;  ///< rings with at least one awake node
-    bool m_allRingsMove = true;      ///< no active region, or it changed since the last full pass
+    std::vector<int> m_movingRings;  ///< rings with at least one awake node (all without a region)
     /// The positions matrix (its data and size) of the last full pass.
     mutable const double* m_centresOf = nullptr;
     mutable Eigen::Index m_centresCols = -1;

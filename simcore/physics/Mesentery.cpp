@@ -1,4 +1,5 @@
 #include "simcore/physics/Mesentery.h"
+#include "simcore/physics/LargestStrain.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -46,28 +47,10 @@ double Mesentery::tangentStiffness(const Law& law, double restLength, double del
 
 double Mesentery::maxStrain(const Positions& x) const
 {
-    // As SpringSet::maxTensileStrain(): screen the tethers by their squared
-    // stretch (l / L)^2, no square root nor division, then take the strain
-    // (l - L) / L itself of those within 1e-12 of the largest; the result is
-    // the strain formula's over every tether, bit for bit.
-    m_stretch2.resize(m_node.size());
-    double most = 0.0;
-    for (size_t t = 0; t < m_node.size(); ++t) {
-        m_stretch2[t] = (x.col(m_node[t]) - m_root[t]).squaredNorm() * m_invRest2[t];
-        most = std::max(most, m_stretch2[t]);
-    }
-    constexpr double kWithin = 1e-12;
-    if (!(most >= 1.0 - kWithin)) {
-        return 0.0;  // every tether slack (no strain above 0 within rounding)
-    }
-    const double candidate = most * (1.0 - kWithin);
-    double strain = 0.0;
-    for (size_t t = 0; t < m_node.size(); ++t) {
-        if (m_stretch2[t] >= candidate) {
-            strain = std::max(strain, ((x.col(m_node[t]) - m_root[t]).norm() - m_rest[t]) / m_rest[t]);
-        }
-    }
-    return strain;
+    return largestTensileStrain(
+        m_node.size(), m_stretch2,
+        [&](size_t t) { return (x.col(m_node[t]) - m_root[t]).squaredNorm() * m_invRest2[t]; },
+        [&](size_t t) { return ((x.col(m_node[t]) - m_root[t]).norm() - m_rest[t]) / m_rest[t]; });
 }
 
 void Mesentery::addForce(const Positions& x, Forces& f) const

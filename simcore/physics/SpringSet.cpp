@@ -1,4 +1,5 @@
 #include "simcore/physics/SpringSet.h"
+#include "simcore/physics/LargestStrain.h"
 
 #include "simcore/physics/SpringKernel.h"
 
@@ -123,33 +124,17 @@ double SpringSet::maxTensileStrain(const Positions& x, SpringFamily family) cons
         }
         m_strainFamily = family;
         m_strainStale = false;
-        m_stretch2.resize(m_strainSprings.size());
     }
-    // The strain (l - L) / L rises with (l / L)^2, which needs neither a
-    // square root nor a division: find the largest squared stretch first,
-    // then take the strain itself, as before, of the springs within 1e-12
-    // of it. Rounding moves the squared stretch by about 1e-15 of itself,
-    // so the spring of largest strain is among them, and the result is the
-    // strain formula's bit for bit.
-    double most = 0.0;
-    for (size_t e = 0; e < m_strainSprings.size(); ++e) {
-        const StrainSpring& p = m_strainSprings[e];
-        m_stretch2[e] = (x.col(p.j) - x.col(p.i)).squaredNorm() * p.invRest2;
-        most = std::max(most, m_stretch2[e]);
-    }
-    constexpr double kWithin = 1e-12;
-    if (!(most >= 1.0 - kWithin)) {
-        return 0.0;  // none stretched (and no strain above 0 within rounding)
-    }
-    const double candidate = most * (1.0 - kWithin);
-    double largest = 0.0;
-    for (size_t e = 0; e < m_strainSprings.size(); ++e) {
-        if (m_stretch2[e] >= candidate) {
+    return largestTensileStrain(
+        m_strainSprings.size(), m_stretch2,
+        [&](size_t e) {
             const StrainSpring& p = m_strainSprings[e];
-            largest = std::max(largest, ((x.col(p.j) - x.col(p.i)).norm() - p.rest) / p.rest);
-        }
-    }
-    return largest;
+            return (x.col(p.j) - x.col(p.i)).squaredNorm() * p.invRest2;
+        },
+        [&](size_t e) {
+            const StrainSpring& p = m_strainSprings[e];
+            return ((x.col(p.j) - x.col(p.i)).norm() - p.rest) / p.rest;
+        });
 }
 
 void SpringSet::addForce(const Positions& x, Forces& f) const

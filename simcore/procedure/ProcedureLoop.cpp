@@ -233,9 +233,12 @@ const ProcedureOutputs& ProcedureLoop::step(const InputSample& input, HandleLoad
     }
 
     applyContact();  // contact is resolved inside the scope's chain iterations
+    // The handle load is the scope's: known now, before the colon's substeps.
+    const scope::HandleLoad load = m_scope.handleLoad();
+    m_outputs.handleForce = -load.axialForce;
+    m_outputs.handleTorque = load.axialTorque;
     if (early != nullptr) {
-        const scope::HandleLoad load = m_scope.handleLoad();
-        early->handleLoadReady(-load.axialForce, load.axialTorque);
+        early->handleLoadReady(m_outputs.handleForce, m_outputs.handleTorque);
     }
     m_simulation->advance();
     m_time += dt;
@@ -287,10 +290,7 @@ void ProcedureLoop::observe()
 {
     const double dt = m_settings.stepping.loopStep;
     const scope::TipPose tip = m_scope.tipPose();
-    const scope::HandleLoad load = m_scope.handleLoad();
-    m_outputs.handleForce = -load.axialForce;
-    m_outputs.handleTorque = load.axialTorque;
-    m_outputs.tip = tip;
+    m_outputs.tip = tip;  // the handle load was set as soon as the scope had it (step())
 
     ProcedureFrame& f = m_frame;
     f.time = m_time;
