@@ -99,10 +99,13 @@ void InsufflationPressure::addStiffnessBound(const Positions& x, Eigen::VectorXd
     // incident triangle. Evaluated at the current shape.
     for (size_t t = 0; t < m_triangles.size(); ++t) {
         const auto& tri = m_triangles[t];
-        double longest = 0.0;
+        // The root of the largest squared edge: the largest of the edges' norms,
+        // bit for bit (the root is monotone and correctly rounded), with one root.
+        double longest2 = 0.0;
         for (int k = 0; k < 3; ++k) {
-            longest = std::max(longest, (x.col(tri[(k + 1) % 3]) - x.col(tri[k])).norm());
+            longest2 = std::max(longest2, (x.col(tri[(k + 1) % 3]) - x.col(tri[k])).squaredNorm());
         }
+        const double longest = std::sqrt(longest2);
         const double rowSum = 3.0 * std::abs(m_pressure) / 6.0 * longest;
         for (const int node : m_triangles[t]) {
             kRow[node] += rowSum;

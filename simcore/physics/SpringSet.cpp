@@ -279,12 +279,21 @@ void SpringSet::addStiffnessBound(const Positions& x, Eigen::VectorXd& kRow, Eig
     // compressed to nearly zero length has an unbounded transverse term; the
     // factor is capped at kMaxTransverseFactor there, and the step check of
     // TissueSimulation catches what the cap misses.
+    // |1 - L/l| > 1 only for l < L/2: a spring longer than 0.51 L has the factor 1
+    // exactly (|1 - L/l| < 0.97 there, rounding aside), which the squared
+    // length tells without the root; the others take the formula.
     constexpr double kMaxTransverseFactor = 10.0;
+    constexpr double kPlainFactorSquared = 0.51 * 0.51;
     for (size_t e = 0; e < m_i.size(); ++e) {
-        const double l = (x.col(m_j[e]) - x.col(m_i[e])).norm();
-        const double factor =
-            l > kMinLength ? std::min(std::max(1.0, std::abs(1.0 - m_rest[e] / l)), kMaxTransverseFactor)
-                           : 1.0;
+        const Eigen::Vector3d d = x.col(m_j[e]) - x.col(m_i[e]);
+        const double l2 = d.squaredNorm();
+        double factor = 1.0;
+        if (!(l2 > kPlainFactorSquared * m_rest[e] * m_rest[e])) {
+            const double l = std::sqrt(l2);
+            factor = l > kMinLength
+                         ? std::min(std::max(1.0, std::abs(1.0 - m_rest[e] / l)), kMaxTransverseFactor)
+                         : 1.0;
+        }
         kRow[m_i[e]] += 2.0 * factor * m_k[e];
         kRow[m_j[e]] += 2.0 * factor * m_k[e];
         cRow[m_i[e]] += 2.0 * m_c[e];

@@ -12,6 +12,9 @@
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <bit>
+#include <cmath>
 #include <cstdint>
 #include <random>
 #include <vector>
@@ -105,6 +108,31 @@ TEST_F(PressureKernel, APartialActiveSetAndANewPressureGiveTheSameBits)
     EXPECT_EQ(differingBits(expected, actual), 0) << "of " << expected.size() << " force components";
     // A sleeping triangle adds nothing: a node no awake triangle touches keeps no force.
     EXPECT_GT(differingBits(transcription(triangles, {}, x, 1.5 * kPressure), actual), 0);
+}
+
+// addStiffnessBound() takes a triangle's longest edge as the root of its
+// largest squared edge, with the bits of the largest of the three norms.
+TEST_F(PressureKernel, TheStiffnessBoundIsTheFormulasBitForBit)
+{
+    const InsufflationPressure pressure(triangles, kPressure);
+    Eigen::VectorXd expected = Eigen::VectorXd::Zero(kNodes);
+    for (const auto& tri : triangles) {
+        double longest = 0.0;
+        for (int k = 0; k < 3; ++k) {
+            longest = std::max(longest, (x.col(tri[(k + 1) % 3]) - x.col(tri[k])).norm());
+        }
+        for (const int node : tri) {
+            expected[node] += 3.0 * std::abs(kPressure) / 6.0 * longest;
+        }
+    }
+    Eigen::VectorXd kRow = Eigen::VectorXd::Zero(kNodes);
+    Eigen::VectorXd cRow = Eigen::VectorXd::Zero(kNodes);
+    pressure.addStiffnessBound(x, kRow, cRow);
+    EXPECT_EQ(cRow.squaredNorm(), 0.0);
+    for (int n = 0; n < kNodes; ++n) {
+        ASSERT_EQ(std::bit_cast<std::uint64_t>(kRow[n]), std::bit_cast<std::uint64_t>(expected[n]))
+            << "node " << n;
+    }
 }
 
 }  // namespace

@@ -211,5 +211,42 @@ TEST_F(SpringKernel, TheLargestTensileStrainIsTheFormulasBitForBit)
               std::bit_cast<std::uint64_t>(strainTranscription(slack, x, SpringFamily::Structural)));
 }
 
+// addStiffnessBound() takes the transverse factor max(1, |1 - L/l|) (capped at
+// 10) only for springs at most 0.51 of their rest length long, the factor
+// being 1 for all others: its row sums are the formula's bits, for springs
+// compressed past half their length, at half exactly, just around the screen's
+// 0.51, stretched, and without length.
+TEST_F(SpringKernel, TheStiffnessBoundIsTheFormulasBitForBit)
+{
+    const Eigen::Vector3d along(0.02, -0.01, 0.015);
+    x.col(20) = Eigen::Vector3d::Zero();
+    x.col(21) = along;
+    for (const double ratio : {1.0 / 0.3, 1.0 / 0.05, 2.0, 1.0 / 0.509, 1.0 / 0.51, 1.0 / 0.511, 0.9}) {
+        springs.add(20, 21, ratio * along.norm(), 40.0, 0.3);
+    }
+    Eigen::VectorXd kExpected = Eigen::VectorXd::Zero(kNodes);
+    Eigen::VectorXd cExpected = Eigen::VectorXd::Zero(kNodes);
+    for (int s = 0; s < springs.numSprings(); ++s) {
+        const double l = (x.col(springs.nodeB(s)) - x.col(springs.nodeA(s))).norm();
+        const double factor = l > SpringSet::kMinLength
+                                  ? std::min(std::max(1.0, std::abs(1.0 - springs.restLength(s) / l)), 10.0)
+                                  : 1.0;
+        for (const int n : {springs.nodeA(s), springs.nodeB(s)}) {
+            kExpected[n] += 2.0 * factor * springs.stiffness(s);
+            cExpected[n] += 2.0 * springs.damping(s);
+        }
+    }
+    Eigen::VectorXd kRow = Eigen::VectorXd::Zero(kNodes);
+    Eigen::VectorXd cRow = Eigen::VectorXd::Zero(kNodes);
+    springs.addStiffnessBound(x, kRow, cRow);
+    EXPECT_GT(kRow[20], 2.0 * 10.0 * 40.0) << "the capped factor of the spring at 0.05 of its length is in";
+    for (int n = 0; n < kNodes; ++n) {
+        ASSERT_EQ(std::bit_cast<std::uint64_t>(kRow[n]), std::bit_cast<std::uint64_t>(kExpected[n]))
+            << "node " << n;
+        ASSERT_EQ(std::bit_cast<std::uint64_t>(cRow[n]), std::bit_cast<std::uint64_t>(cExpected[n]))
+            << "node " << n;
+    }
+}
+
 }  // namespace
 }  // namespace colonosim::physics
