@@ -13,7 +13,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <random>
@@ -129,10 +128,7 @@ TEST_F(PressureKernel, TheStiffnessBoundIsTheFormulasBitForBit)
     Eigen::VectorXd cRow = Eigen::VectorXd::Zero(kNodes);
     pressure.addStiffnessBound(x, kRow, cRow);
     EXPECT_EQ(cRow.squaredNorm(), 0.0);
-    for (int n = 0; n < kNodes; ++n) {
-        ASSERT_EQ(std::bit_cast<std::uint64_t>(kRow[n]), std::bit_cast<std::uint64_t>(expected[n]))
-            << "node " << n;
-    }
+    EXPECT_EQ(differingBits(expected, kRow), 0) << "of " << kNodes << " stiffness row sums";
 }
 
 }  // namespace

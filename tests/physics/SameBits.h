@@ -1,6 +1,6 @@
 #pragma once
 // For the force kernels' tests (SpringKernelTest, PressureKernelTest): how
-// many components of two force fields differ in their bits.
+// many components of two force fields (or row sums) differ in their bits.
 
 #include "simcore/physics/ForceTerm.h"
 
@@ -9,8 +9,11 @@
 
 namespace colonosim::physics::testing {
 
-/// Components of `actual` whose bits differ from `expected`'s (the two of one size).
-inline int differingBits(const Forces& expected, const Forces& actual)
+/// Components of `actual` whose bits differ from `expected`'s (the two of one
+/// size): force fields, row sums, any plain Eigen array of doubles.
+template <class Expected, class Actual>
+int differingBits(const Eigen::PlainObjectBase<Expected>& expected,
+                  const Eigen::PlainObjectBase<Actual>& actual)
 {
     int differing = 0;
     for (Eigen::Index k = 0; k < expected.size(); ++k) {
