@@ -1,6 +1,7 @@
 // The whole procedure through the Haptic Device Controller, as a person with
-// a haptic device drives it (issue 8's end-to-end run), reported rather than
-// asserted: the scripted expert watches the procedure and moves the virtual
+// a haptic device drives it, reported (the test
+// HdcEndToEnd.TheSimulatedDeviceDrivesTheExpertsWholeProcedureToTheCecumAndBack
+// asserts the same run ticked in lockstep): the scripted expert watches the procedure and moves the virtual
 // hand of the simulated device; the HDC (its own thread, real time, 1 kHz)
 // sends the device's input over OpenIGTLink on loopback; the simulator's HDC
 // operator hands it to the procedure loop, which steps on each device frame
@@ -9,7 +10,13 @@
 // The expert closes its loop through the device (its grip and carriage), not
 // through the loop's input directly.
 //
-//   hdc_full_run [--seconds S] [--grip N_PER_M] [--twist-grip N_M_PER_RAD]
+//   hdc_full_run [--seconds S] [--grip N_PER_M] [--twist-grip N_M_PER_RAD] [--lockstep 0|1]
+//
+// --lockstep 1 drives the HDC's servo ticks from this thread, one before each
+// loop step, on the servo's own clock (tick k at k servo periods) instead of
+// its real-time thread: the same device, link, messages and loop, in as much
+// wall time as the computation takes (the loop never falls behind the
+// device), and the same run each time.
 //
 // --grip and --twist-grip set the virtual hand's grip on the carriage and on
 // the shaft (SimulatedDevice::Parameters; their damping follows, near
@@ -78,6 +85,8 @@ int main(int argc, char** argv)
     grip.handTorsionDamping = std::min(SimulatedDevice::Parameters::torsionDampingSpec.maxValue,
                                        2.0 * std::sqrt(grip.handTorsionStiffness * grip.rotorInertia));
 
+    const bool lockstep = option(argc, argv, "--lockstep", 0.0, 0.0, 1.0) != 0.0;
+
     const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(geometry::AnatomyParameters{});
     const procedure::ProcedureSettings settings;
     const HapticParameters parameters;
@@ -87,9 +96,19 @@ int main(int argc, char** argv)
     HandTarget hand;
     SimulatedDevice device([&hand](double) { return hand.latest(); }, grip);
     HdcController hdc(device, parameters, "127.0.0.1", hdcInput.server().port());
-    std::jthread hdcThread([&hdc](std::stop_token stop) { hdc.run(stop, 1e6); });
-    for (int i = 0; i < 4000 && !hdcInput.server().connected(); ++i) {
-        std::this_thread::sleep_for(std::chrono::microseconds(500));  // the device's first frame
+    std::jthread hdcThread;
+    double servoClock = 0.0;  // s, the servo's time when ticked from here (--lockstep)
+    if (lockstep) {
+        for (int i = 0; i < 4000 && !hdcInput.server().connected(); ++i) {
+            hdc.tick(servoClock);
+            servoClock += parameters.servoPeriod;
+            std::this_thread::sleep_for(std::chrono::microseconds(500));  // the device's first frame
+        }
+    } else {
+        hdcThread = std::jthread([&hdc](std::stop_token stop) { hdc.run(stop, 1e6); });
+        for (int i = 0; i < 4000 && !hdcInput.server().connected(); ++i) {
+            std::this_thread::sleep_for(std::chrono::microseconds(500));  // the device's first frame
+        }
     }
     if (!hdcInput.server().connected()) {
         std::fprintf(stderr, "hdc_full_run: the HDC did not connect within 2 s\n");
@@ -111,6 +130,10 @@ int main(int argc, char** argv)
         // The HDC operator keeps time: the loop steps on each device frame.
         const procedure::InputSample wanted = expert.next(loop);
         hand.publish(wanted);
+        if (lockstep) {
+            hdc.tick(servoClock);
+            servoClock += parameters.servoPeriod;
+        }
         hdcInput.recordConnection(loop);
         loop.step(hdcInput.next(loop), &hdcInput);
         if (!loop.lumen().contacts().empty() && loop.lumen().contacts().back().depth > diameter) {
@@ -128,8 +151,10 @@ int main(int argc, char** argv)
             }
         }
     }
-    hdcThread.request_stop();
-    hdcThread.join();
+    if (hdcThread.joinable()) {
+        hdcThread.request_stop();
+        hdcThread.join();
+    }
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     const auto& samples = loop.recording().samples;
@@ -138,7 +163,8 @@ int main(int argc, char** argv)
         widestGap = std::max(widestGap, samples[k].time - samples[k - 1].time);
     }
     std::printf(
-        "grip %.0f N/m, twist grip %.1f N m/rad; simulated %.3f s in %.1f s of wall time; expert %s\n",
+        "%s; grip %.0f N/m, twist grip %.1f N m/rad; simulated %.3f s in %.1f s of wall time; expert %s\n",
+        lockstep ? "servo ticked before each step (lockstep)" : "servo on its own real-time thread",
         grip.handStiffness, grip.handTorsionStiffness, loop.time(), wall,
         expert.finished() ? "finished" : "still at work");
     if (cecum >= 0.0) {
