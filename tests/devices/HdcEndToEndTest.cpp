@@ -51,18 +51,30 @@ bool waitForConnection(const HdcOperator& hdc)
     return hdc.server().connected();
 }
 
-TEST(HdcEndToEnd, TheExpertDrivesTheLoopThroughTheSimulatedDeviceAndTheHdcAndSurvivesAReconnection)
-{
+/// The default colon's loop, the simulator's HDC operator on a free port and
+/// the scripted expert with the hand it moves: what both tests drive.
+class HdcEndToEnd : public ::testing::Test {
+protected:
     const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(geometry::AnatomyParameters{});
     const procedure::ProcedureSettings settings;
     const HapticParameters parameters;
-    procedure::ProcedureLoop loop(anatomy, settings);
-    HdcOperator hdc(0, parameters);
-    procedure::ScriptedOperator expert(procedure::expertStyle());
+    procedure::ProcedureLoop loop{anatomy, settings};
+    HdcOperator hdc{0, parameters};
+    procedure::ScriptedOperator expert{procedure::expertStyle()};
     HandTarget hand;
+
+    /// The simulated device's virtual hand: wherever the expert last put it.
+    HandTrajectory followTheHand()
+    {
+        return [this](double) { return hand.latest(); };
+    }
+};
+
+TEST_F(HdcEndToEnd, TheExpertDrivesTheLoopThroughTheSimulatedDeviceAndTheHdcAndSurvivesAReconnection)
+{
     const SimulatedDevice::Parameters grip = firmGrip();
 
-    SimulatedDevice firstDevice([&hand](double) { return hand.latest(); }, grip);
+    SimulatedDevice firstDevice(followTheHand(), grip);
     auto first = std::make_unique<HdcController>(firstDevice, parameters, "127.0.0.1", hdc.server().port());
     std::jthread firstThread([&first](std::stop_token stop) { first->run(stop, 60.0); });
     ASSERT_TRUE(waitForConnection(hdc));
@@ -76,7 +88,7 @@ TEST(HdcEndToEnd, TheExpertDrivesTheLoopThroughTheSimulatedDeviceAndTheHdcAndSur
         if (step == kSteps / 2) {
             firstThread.request_stop();  // the first HDC goes away mid-procedure
             firstThread.join();
-            secondDevice = std::make_unique<SimulatedDevice>([&hand](double) { return hand.latest(); }, grip);
+            secondDevice = std::make_unique<SimulatedDevice>(followTheHand(), grip);
             second =
                 std::make_unique<HdcController>(*secondDevice, parameters, "127.0.0.1", hdc.server().port());
             secondThread = std::jthread([&second](std::stop_token stop) { second->run(stop, 60.0); });
@@ -119,17 +131,10 @@ TEST(HdcEndToEnd, TheExpertDrivesTheLoopThroughTheSimulatedDeviceAndTheHdcAndSur
     }
 }
 
-TEST(HdcEndToEnd, TheSimulatedDeviceDrivesTheExpertsWholeProcedureToTheCecumAndBack)
+TEST_F(HdcEndToEnd, TheSimulatedDeviceDrivesTheExpertsWholeProcedureToTheCecumAndBack)
 {
     constexpr long kMaxSteps = 300000;  // 300 s at 1 kHz
-    const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(geometry::AnatomyParameters{});
-    const procedure::ProcedureSettings settings;
-    const HapticParameters parameters;
-    procedure::ProcedureLoop loop(anatomy, settings);
-    HdcOperator hdc(0, parameters);
-    procedure::ScriptedOperator expert(procedure::expertStyle());
-    HandTarget hand;
-    SimulatedDevice device([&hand](double) { return hand.latest(); }, firmGrip());
+    SimulatedDevice device(followTheHand(), firmGrip());
     HdcController controller(device, parameters, "127.0.0.1", hdc.server().port());
     double servoClock = 0.0;  // s, the servo's own time
     for (int i = 0; i < 4000 && !hdc.server().connected(); ++i) {
