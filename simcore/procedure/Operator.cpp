@@ -28,6 +28,9 @@ constexpr double kNearStop = 0.05;
 constexpr double kBlockedFor = 1.5;
 /// m fed within kBlockedFor that still counts as getting on.
 constexpr double kBlockedFeed = 0.005;
+/// m of insertion at which the withdrawal ends: the tip back in the rectum,
+/// the examination over.
+constexpr double kWithdrawnTo = 0.05;
 /// s without getting on (kBlockedFeed) while inserting or sliding by, the
 /// dials short of their stops, before the expert changes approach all the
 /// same: a hand that neither feeds nor turns further is stuck (at the
@@ -314,7 +317,7 @@ InputSample ScriptedOperator::next(const ProcedureLoop& loop)
     case Phase::Withdraw:
         m_input.insertion = std::max(m_input.insertion - m_style.withdrawSpeed * dt, 0.0);
         m_input.rotation -= 0.3 * std::sin(0.5 * loop.time()) * dt;  // sweep the view, clockwise first
-        m_finished = m_input.insertion <= 0.05;
+        m_finished = m_input.insertion <= kWithdrawnTo;
         break;
     }
     return m_input;
