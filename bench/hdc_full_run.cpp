@@ -1,8 +1,8 @@
 // The whole procedure through the Haptic Device Controller, as a person with
 // a haptic device drives it, reported (the test
 // HdcEndToEnd.TheSimulatedDeviceDrivesTheExpertsWholeProcedureToTheCecumAndBack
-// asserts the same run ticked in lockstep): the scripted expert watches the procedure and moves the virtual
-// hand of the simulated device; the HDC (its own thread, real time, 1 kHz)
+// asserts the same run ticked in lockstep): the scripted expert watches the
+// procedure and moves the virtual hand of the simulated device; the HDC (its own thread, real time, 1 kHz)
 // sends the device's input over OpenIGTLink on loopback; the simulator's HDC
 // operator hands it to the procedure loop, which steps on each device frame
 // as it arrives (never ahead of the device's clock) and sends the handle
@@ -85,7 +85,12 @@ int main(int argc, char** argv)
     grip.handTorsionDamping = std::min(SimulatedDevice::Parameters::torsionDampingSpec.maxValue,
                                        2.0 * std::sqrt(grip.handTorsionStiffness * grip.rotorInertia));
 
-    const bool lockstep = option(argc, argv, "--lockstep", 0.0, 0.0, 1.0) != 0.0;
+    const double lockstepFlag = option(argc, argv, "--lockstep", 0.0, 0.0, 1.0);
+    if (lockstepFlag != 0.0 && lockstepFlag != 1.0) {
+        std::fprintf(stderr, "hdc_full_run: --lockstep = %g must be 0 or 1\n", lockstepFlag);
+        return 2;
+    }
+    const bool lockstep = lockstepFlag == 1.0;
 
     const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(geometry::AnatomyParameters{});
     const procedure::ProcedureSettings settings;
@@ -97,18 +102,14 @@ int main(int argc, char** argv)
     SimulatedDevice device([&hand](double) { return hand.latest(); }, grip);
     HdcController hdc(device, parameters, "127.0.0.1", hdcInput.server().port());
     std::jthread hdcThread;
-    double servoClock = 0.0;  // s, the servo's time when ticked from here (--lockstep)
-    if (lockstep) {
-        for (int i = 0; i < 4000 && !hdcInput.server().connected(); ++i) {
-            hdc.tick(servoClock);
-            servoClock += parameters.servoPeriod;
-            std::this_thread::sleep_for(std::chrono::microseconds(500));  // the device's first frame
-        }
-    } else {
+    if (!lockstep) {
         hdcThread = std::jthread([&hdc](std::stop_token stop) { hdc.run(stop, 1e6); });
-        for (int i = 0; i < 4000 && !hdcInput.server().connected(); ++i) {
-            std::this_thread::sleep_for(std::chrono::microseconds(500));  // the device's first frame
+    }
+    for (int i = 0; i < 4000 && !hdcInput.server().connected(); ++i) {
+        if (lockstep) {
+            hdc.tickLockstep();
         }
+        std::this_thread::sleep_for(std::chrono::microseconds(500));  // the device's first frame
     }
     if (!hdcInput.server().connected()) {
         std::fprintf(stderr, "hdc_full_run: the HDC did not connect within 2 s\n");
@@ -131,8 +132,7 @@ int main(int argc, char** argv)
         const procedure::InputSample wanted = expert.next(loop);
         hand.publish(wanted);
         if (lockstep) {
-            hdc.tick(servoClock);
-            servoClock += parameters.servoPeriod;
+            hdc.tickLockstep();
         }
         hdcInput.recordConnection(loop);
         loop.step(hdcInput.next(loop), &hdcInput);

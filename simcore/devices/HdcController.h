@@ -45,6 +45,10 @@ public:
     void run(std::stop_token stop, double duration);
     /// One servo tick at local time `now` (s).
     void tick(double now);
+    /// One tick on the servo's own clock instead of the wall clock: at
+    /// (ticks so far) x servo period, for a host that ticks the servo itself
+    /// once per loop step (lockstep: the run takes the computation's time).
+    void tickLockstep() { tick(m_stats.ticks * m_servo.parameters().servoPeriod); }
 
     [[nodiscard]] const ForceServo& servo() const { return m_servo; }
     ForceServo& servo() { return m_servo; }

@@ -43,9 +43,14 @@ SimulatedDevice::Parameters firmGrip()
     return grip;
 }
 
-bool waitForConnection(const HdcOperator& hdc)
+/// Waits up to 2 s for the device's first frame; `lockstep`: ticking it
+/// meanwhile (no servo thread runs).
+bool waitForConnection(const HdcOperator& hdc, HdcController* lockstep = nullptr)
 {
     for (int i = 0; i < 4000 && !hdc.server().connected(); ++i) {
+        if (lockstep != nullptr) {
+            lockstep->tickLockstep();
+        }
         std::this_thread::sleep_for(std::chrono::microseconds(500));
     }
     return hdc.server().connected();
@@ -136,13 +141,7 @@ TEST_F(HdcEndToEnd, TheSimulatedDeviceDrivesTheExpertsWholeProcedureToTheCecumAn
     constexpr long kMaxSteps = 300000;  // 300 s at 1 kHz
     SimulatedDevice device(followTheHand(), firmGrip());
     HdcController controller(device, parameters, "127.0.0.1", hdc.server().port());
-    double servoClock = 0.0;  // s, the servo's own time
-    for (int i = 0; i < 4000 && !hdc.server().connected(); ++i) {
-        controller.tick(servoClock);
-        servoClock += parameters.servoPeriod;
-        std::this_thread::sleep_for(std::chrono::microseconds(500));
-    }
-    ASSERT_TRUE(hdc.server().connected());
+    ASSERT_TRUE(waitForConnection(hdc, &controller));
 
     const double diameter = settings.scope.outerDiameter;
     long steps = 0;
@@ -152,8 +151,7 @@ TEST_F(HdcEndToEnd, TheSimulatedDeviceDrivesTheExpertsWholeProcedureToTheCecumAn
     for (; steps < kMaxSteps && !expert.finished(); ++steps) {
         const procedure::InputSample wanted = expert.next(loop);
         hand.publish(wanted);
-        controller.tick(servoClock);  // reads the device, sends its frame, takes the last load
-        servoClock += parameters.servoPeriod;
+        controller.tickLockstep();  // reads the device, sends its frame, takes the last load
         hdc.recordConnection(loop);
         loop.step(hdc.next(loop), &hdc);
         outside += loop.lumen().contacts().back().depth > diameter ? 1 : 0;
