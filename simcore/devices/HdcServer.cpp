@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <thread>
 
 #include <sys/eventfd.h>
 #include <unistd.h>
@@ -30,16 +31,26 @@ HdcServer::~HdcServer()
 
 std::optional<StampedInput> HdcServer::latestInput()
 {
-    {
-        const std::lock_guard lock(m_arrivalMutex);
-        m_framesTaken = m_framesWritten;
-    }
+    // The count first: a frame counted after it is read with it or after.
+    m_framesTaken = m_framesWritten.load(std::memory_order_acquire);
     StampedInput in;
     if (m_inputs.read(in)) {
         return in;
     }
     return std::nullopt;
 }
+
+namespace {
+/// One turn of a polling wait: tells the core that this is a spin.
+inline void spinPause()
+{
+#if defined(__x86_64__) || defined(__i386__)
+    __builtin_ia32_pause();
+#else
+    std::this_thread::yield();
+#endif
+}
+}  // namespace
 
 std::optional<StampedInput> HdcServer::waitForInput(double timeout)
 {
@@ -48,11 +59,13 @@ std::optional<StampedInput> HdcServer::waitForInput(double timeout)
         Clock::now() +
         std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(std::max(timeout, 0.0)));
     for (;;) {
-        bool arrived = false;
-        {
-            std::unique_lock lock(m_arrivalMutex);
-            arrived =
-                m_arrival.wait_until(lock, deadline, [this] { return m_framesWritten != m_framesTaken; });
+        bool arrived = true;
+        while (m_framesWritten.load(std::memory_order_acquire) == m_framesTaken) {
+            if (Clock::now() >= deadline) {
+                arrived = false;
+                break;
+            }
+            spinPause();
         }
         // A frame counted after the last take may already have been read
         // with it: then there is nothing fresh, and the wait goes on.
@@ -128,11 +141,7 @@ void HdcServer::serve(std::stop_token stop)
                 frame.time = m->time;
                 ++frame.frame;
                 m_inputs.write(frame);
-                {
-                    const std::lock_guard lock(m_arrivalMutex);
-                    ++m_framesWritten;
-                }
-                m_arrival.notify_one();
+                m_framesWritten.fetch_add(1, std::memory_order_release);
                 break;
             case Message::Kind::Status:
                 m_emergencyStop = m->statusCode == kStatusDisabled;

@@ -46,6 +46,22 @@ public:
         return m_max;
     }
 
+    /// The fraction (0..1) of the durations longer than `seconds`, to the
+    /// bin: those in bins wholly above it (the overflow bin counts as above
+    /// below 50 ms); 0 when empty or at or above the maximum.
+    [[nodiscard]] double fractionAbove(double seconds) const
+    {
+        if (m_count == 0 || seconds >= m_max) {
+            return 0.0;
+        }
+        const auto first = static_cast<std::int64_t>(std::max(0.0, seconds) / kBin) + 1;
+        std::int64_t above = 0;
+        for (std::int64_t b = std::min<std::int64_t>(first, kBins); b <= kBins; ++b) {
+            above += m_counts[static_cast<size_t>(b)];
+        }
+        return static_cast<double>(above) / static_cast<double>(m_count);
+    }
+
 private:
     std::vector<std::int64_t> m_counts = std::vector<std::int64_t>(kBins + 1, 0);  ///< sized once
     std::int64_t m_count = 0;

@@ -156,4 +156,21 @@ TEST(TimeHistogram, QuantilesToTheMicrosecondAndTheExactMaximum)
     EXPECT_NEAR(h.quantile(0.5), 501e-6, 1e-12);
 }
 
+TEST(TimeHistogram, TheShareAboveADurationCountsTheBinsWhollyAboveIt)
+{
+    colonosim::devices::TimeHistogram h;
+    EXPECT_EQ(h.fractionAbove(1e-3), 0.0) << "empty";
+    // Latencies as a 1 kHz servo sees them: whole ticks with a little jitter.
+    for (int k = 0; k < 97; ++k) {
+        h.add(1.0004e-3);
+    }
+    h.add(1.98e-3);
+    h.add(2.001e-3);
+    h.add(0.06);  // beyond the last bin: still counted above
+    EXPECT_NEAR(h.fractionAbove(1.5e-3), 0.03, 1e-12);
+    EXPECT_NEAR(h.fractionAbove(0.5e-3), 1.0, 1e-12);
+    EXPECT_NEAR(h.fractionAbove(0.05), 0.01, 1e-12);
+    EXPECT_EQ(h.fractionAbove(0.1), 0.0) << "nothing is longer than the maximum";
+}
+
 }  // namespace

@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <ctime>
 #include <limits>
 #include <thread>
 
@@ -71,6 +72,40 @@ TEST(HapticLink, InputAndLoadRoundTripOverLoopback)
     EXPECT_DOUBLE_EQ(load->values[0], 3.25);
     EXPECT_DOUBLE_EQ(load->values[1], -0.125);
     EXPECT_NEAR(load->time, 12.5, 1e-6);
+}
+
+/// CPU time of the calling thread, s.
+double threadCpuSeconds()
+{
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+TEST(HapticLink, TheLoopWaitsForAFrameOnItsCoreAndStepsOnTheFrameWhenItComes)
+{
+    HdcServer server(0, HapticParameters{});
+    TcpLink client = TcpLink::connect("127.0.0.1", server.port(), 1.0);
+    ASSERT_TRUE(waitFor([&] { return server.connected(); }));
+    // No frame: the wait ends at its timeout with nothing, having polled
+    // (the thread's CPU time runs with the wait) rather than slept.
+    const auto start = std::chrono::steady_clock::now();
+    const double cpuBefore = threadCpuSeconds();
+    EXPECT_FALSE(server.waitForInput(0.005).has_value());
+    const double waited = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double cpu = threadCpuSeconds() - cpuBefore;
+    EXPECT_GE(waited, 0.005);
+    EXPECT_GT(cpu, 0.05 * waited) << "a sleeping wait uses almost no CPU: " << cpu << " s of " << waited
+                                  << " s";
+    // A frame sent during the wait ends it with that frame.
+    std::jthread sender([&] {
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+        client.send(encodeInput(sample(), 3.0));
+    });
+    const std::optional<StampedInput> got = server.waitForInput(1.0);
+    ASSERT_TRUE(got.has_value());
+    EXPECT_NEAR(got->time, 3.0, 1e-6);
+    EXPECT_FALSE(server.latestInput().has_value()) << "taken: nothing fresh until the next frame";
 }
 
 TEST(HapticLink, ASecondHdcIsRefusedWithAReason)
