@@ -40,32 +40,24 @@ std::optional<StampedInput> HdcServer::latestInput()
     return std::nullopt;
 }
 
-namespace {
-/// One turn of a polling wait: tells the core that this is a spin.
-inline void spinPause()
-{
-#if defined(__x86_64__) || defined(__i386__)
-    __builtin_ia32_pause();
-#else
-    std::this_thread::yield();
-#endif
-}
-}  // namespace
-
 std::optional<StampedInput> HdcServer::waitForInput(double timeout)
 {
     using Clock = std::chrono::steady_clock;
-    const Clock::time_point deadline =
-        Clock::now() +
-        std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(std::max(timeout, 0.0)));
+    const Clock::time_point now = Clock::now();
+    const Clock::time_point deadline = now + std::chrono::duration_cast<Clock::duration>(
+                                                 std::chrono::duration<double>(std::max(timeout, 0.0)));
+    const Clock::time_point pollUntil = std::min(
+        deadline, now + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(kPollFor)));
+    const auto fresh = [this] { return m_framesWritten.load(std::memory_order_acquire) != m_framesTaken; };
     for (;;) {
-        bool arrived = true;
-        while (m_framesWritten.load(std::memory_order_acquire) == m_framesTaken) {
-            if (Clock::now() >= deadline) {
-                arrived = false;
-                break;
-            }
-            spinPause();
+        bool arrived = fresh();
+        while (!arrived && Clock::now() < pollUntil) {
+            std::this_thread::yield();  // the core stays busy, but any thread waiting for it runs
+            arrived = fresh();
+        }
+        if (!arrived) {
+            std::unique_lock lock(m_arrivalMutex);
+            arrived = m_arrival.wait_until(lock, deadline, fresh);
         }
         // A frame counted after the last take may already have been read
         // with it: then there is nothing fresh, and the wait goes on.
@@ -141,7 +133,11 @@ void HdcServer::serve(std::stop_token stop)
                 frame.time = m->time;
                 ++frame.frame;
                 m_inputs.write(frame);
-                m_framesWritten.fetch_add(1, std::memory_order_release);
+                {
+                    const std::lock_guard lock(m_arrivalMutex);  // no wake-up lost between a check and a wait
+                    m_framesWritten.fetch_add(1, std::memory_order_release);
+                }
+                m_arrival.notify_one();
                 break;
             case Message::Kind::Status:
                 m_emergencyStop = m->statusCode == kStatusDisabled;

@@ -8,12 +8,17 @@
 /// to step on each frame as it arrives); handle loads go back the same way
 /// (publishLoad()). The procedure thread never touches a socket.
 ///
-/// waitForInput() polls for the frame rather than sleeping on it: a
+/// waitForInput() first polls for the frame, yielding its core to any
+/// thread waiting for it, for up to kPollFor, and only then sleeps: a
 /// procedure thread put to sleep between frames wakes on a core that has
 /// gone idle, and the step it then runs takes longer (bench/paced_loop: the
 /// push into the sigmoid paced at 1 kHz, a step's median 0.90-1.04 ms after
-/// a sleep against 0.68-0.74 ms after polling). The device sets the pace,
-/// so the wait is at most the rest of a servo period.
+/// a sleep against 0.68-0.74 ms after polling). The poll is bounded because
+/// the frame comes through the I/O thread: on a machine whose cores are all
+/// busy, an unbounded poll kept that thread off the cores often enough that
+/// 412 of 267,535 steps of the whole procedure through the HDC went without
+/// their frame (HdcEndToEnd.*WholeProcedure*, while other tests ran on the
+/// second core).
 
 #include "simcore/devices/HapticParameters.h"
 #include "simcore/devices/IgtlMessages.h"
@@ -21,6 +26,8 @@
 #include "simcore/devices/TripleBuffer.h"
 
 #include <atomic>
+#include <condition_variable>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <thread>
@@ -54,6 +61,8 @@ public:
     /// The newest input frame since the last call of either, waiting up to
     /// `timeout` seconds for one to arrive; nothing when none came by then.
     std::optional<StampedInput> waitForInput(double timeout);
+    /// s: how long waitForInput() polls before it sleeps (a servo period).
+    static constexpr double kPollFor = 0.001;
     /// Sends the handle load computed from the input frame of time `inputTime`.
     void publishLoad(const HandleCommand& load, double inputTime);
     /// Loads published so far (read on the thread that publishes them).
@@ -71,8 +80,11 @@ private:
     HapticParameters m_parameters;
     TcpListener m_listener;
     TripleBuffer<StampedInput> m_inputs;
-    std::atomic<long> m_framesWritten{0};  ///< I/O thread's count, raised after each frame it writes
-    long m_framesTaken = 0;                ///< procedure thread's: m_framesWritten when it last took a frame
+    std::mutex m_arrivalMutex;
+    std::condition_variable m_arrival;  ///< notified by the I/O thread after each frame it writes
+    std::atomic<long> m_framesWritten{
+        0};                  ///< raised under m_arrivalMutex after each frame; polled without it
+    long m_framesTaken = 0;  ///< procedure thread's: m_framesWritten when it last took a frame
     TripleBuffer<StampedLoad> m_loads;
     long m_loadSequence = 0;
     std::atomic<bool> m_connected{false};
