@@ -2,8 +2,9 @@
 // a haptic device drives it, reported (the test
 // HdcEndToEnd.TheSimulatedDeviceDrivesTheExpertsWholeProcedureToTheCecumAndBack
 // asserts the same run ticked in lockstep): the scripted expert watches the
-// procedure and moves the virtual hand of the simulated device; the HDC (its own thread, real time, 1 kHz)
-// sends the device's input over OpenIGTLink on loopback; the simulator's HDC
+// procedure and moves the virtual hand of the simulated device; the HDC (its
+// own thread, real time, 1 kHz) sends the device's input over OpenIGTLink on
+// loopback; the simulator's HDC
 // operator hands it to the procedure loop, which steps on each device frame
 // as it arrives (never ahead of the device's clock) and sends the handle
 // load back for the HDC's servo to render.

@@ -44,10 +44,11 @@ std::optional<StampedInput> HdcServer::waitForInput(double timeout)
 {
     using Clock = std::chrono::steady_clock;
     const Clock::time_point now = Clock::now();
-    const Clock::time_point deadline = now + std::chrono::duration_cast<Clock::duration>(
-                                                 std::chrono::duration<double>(std::max(timeout, 0.0)));
-    const Clock::time_point pollUntil = std::min(
-        deadline, now + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(kPollFor)));
+    const auto after = [now](double seconds) {
+        return now + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
+    };
+    const Clock::time_point deadline = after(std::max(timeout, 0.0));
+    const Clock::time_point pollUntil = std::min(deadline, after(kPollFor));
     const auto fresh = [this] { return m_framesWritten.load(std::memory_order_acquire) != m_framesTaken; };
     for (;;) {
         bool arrived = fresh();

@@ -82,8 +82,8 @@ private:
     TripleBuffer<StampedInput> m_inputs;
     std::mutex m_arrivalMutex;
     std::condition_variable m_arrival;  ///< notified by the I/O thread after each frame it writes
-    std::atomic<long> m_framesWritten{
-        0};                  ///< raised under m_arrivalMutex after each frame; polled without it
+    /// Raised under m_arrivalMutex after each frame; polled without it.
+    std::atomic<long> m_framesWritten{0};
     long m_framesTaken = 0;  ///< procedure thread's: m_framesWritten when it last took a frame
     TripleBuffer<StampedLoad> m_loads;
     long m_loadSequence = 0;
