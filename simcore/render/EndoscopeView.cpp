@@ -80,6 +80,14 @@ EndoscopeView::EndoscopeView(const GlFunctions& gl, const WallSurface& surface,
     gl.EnableVertexAttribArray(5);
 
     m_bleedingNear.assign(numVertices, 0.0F);
+    m_chartRadius.resize(numVertices);
+    m_chartAngle.resize(numVertices);
+    for (size_t v = 0; v < numVertices; ++v) {
+        const double y = m_chart[3 * v + 1];
+        const double z = m_chart[3 * v + 2];
+        m_chartRadius[v] = std::hypot(y, z);
+        m_chartAngle[v] = std::atan2(z, y);
+    }
     gl.GenBuffers(1, &m_bleedingBuffer);
     gl.BindBuffer(GL_ARRAY_BUFFER, m_bleedingBuffer);
     gl.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(numVertices * sizeof(float)),
@@ -188,6 +196,9 @@ void EndoscopeView::setBleedingMarks(const std::vector<BleedingMark>& marks)
     m_marks.assign(marks.begin(), marks.begin() + static_cast<long>(count));
     m_markPlaces.resize(count);
     m_markUniforms.resize(4 * count);
+    // A mark darkens as it is hit again (its opacity, a uniform): the
+    // vertices near the marks change only with a new mark or a wider one.
+    bool sameReach = previous.size() == count;
     for (size_t k = 0; k < count; ++k) {
         const BleedingMark& mark = m_marks[k];
         // A mark keeps its rest point; only a new one is looked up on the chart.
@@ -199,6 +210,10 @@ void EndoscopeView::setBleedingMarks(const std::vector<BleedingMark>& marks)
         m_markUniforms[4 * k + 1] = static_cast<float>(std::remainder(place.angle, 2.0 * std::numbers::pi));
         m_markUniforms[4 * k + 2] = static_cast<float>(mark.radius * 1000.0);
         m_markUniforms[4 * k + 3] = static_cast<float>(std::clamp(mark.opacity, 0.0, 1.0));
+        sameReach = sameReach && previous[k].restPoint == mark.restPoint && previous[k].radius == mark.radius;
+    }
+    if (sameReach) {
+        return;
     }
     // A fragment within a mark's radius lies in a triangle with a vertex
     // within the radius plus one edge (the visual mesh's edges are 2-3 mm).
@@ -206,10 +221,8 @@ void EndoscopeView::setBleedingMarks(const std::vector<BleedingMark>& marks)
     std::fill(m_bleedingNear.begin(), m_bleedingNear.end(), 0.0F);
     for (size_t v = 0; v < m_bleedingNear.size(); ++v) {
         const double s = m_chart[3 * v];
-        const double y = m_chart[3 * v + 1];
-        const double z = m_chart[3 * v + 2];
-        const double r = std::hypot(y, z);
-        const double angle = std::atan2(z, y);
+        const double r = m_chartRadius[v];
+        const double angle = m_chartAngle[v];
         for (size_t k = 0; k < m_marks.size(); ++k) {
             const double ds = s - m_markPlaces[k].arcLength;
             const double reach = m_marks[k].radius + kReach;

@@ -152,7 +152,11 @@ private:
     std::vector<WallPlace> m_markPlaces;  ///< each mark's place on the chart
     std::vector<float> m_markUniforms;    ///< 4 per mark: s (mm), angle (rad), radius (mm), opacity
     std::vector<float> m_bleedingNear;    ///< per vertex
-    Eigen::Vector3d m_up;                 ///< against gravity: the fluid surface's normal
+    /// Per vertex, its chart's distance from the centreline (m) and angle
+    /// round it (rad): the marks' reach is measured with them.
+    std::vector<double> m_chartRadius;
+    std::vector<double> m_chartAngle;
+    Eigen::Vector3d m_up;  ///< against gravity: the fluid surface's normal
     double m_redOut = 0.0;
 };
 

@@ -209,6 +209,35 @@ TEST(EndoscopeView, BleedingMarkAheadIsADarkRedSpotWhereTheLensProjectsIt)
     }
 }
 
+// One view whose mark darkens (hit again) and then widens draws each frame as
+// a view given those marks afresh: the darkening changes only the mark's
+// uniforms, the widening also the vertices it reaches.
+TEST(EndoscopeView, AMarkThatDarkensOrWidensIsDrawnAsIfSetAfresh)
+{
+    const render::CameraPose pose = axialPose(0.02);
+    const auto centreline = colonosim::testing::straightCentreline(kRadius, kLength, 0.001);
+    const Eigen::Vector3d at = render::wallPoint(centreline, render::WallPlace{0.05, -0.6});
+    const std::vector<std::vector<render::BleedingMark>> steps = {
+        {{at, 0.003, 0.4}}, {{at, 0.003, 0.9}}, {{at, 0.012, 0.9}}};
+    std::vector<render::RgbaImage> stepped;
+    {
+        render::OffscreenContext context(kWidth, kHeight);
+        const auto tube = colonosim::testing::straightTube(kRadius, kLength, 0.002, 64);
+        const render::WallSurface surface = render::buildWallSurface(tube, centreline, {});
+        render::EndoscopeView view(context.gl(), surface, render::RenderParameters{});
+        for (const auto& marks : steps) {
+            view.setBleedingMarks(marks);
+            view.render(pose, {0.0, 0.0, std::numeric_limits<double>::infinity()}, kWidth, kHeight);
+            stepped.push_back(context.readBack());
+        }
+    }
+    for (size_t k = 0; k < steps.size(); ++k) {
+        EXPECT_EQ(stepped[k].pixels, renderTube({}, pose, 0.0, steps[k]).image.pixels) << "step " << k;
+    }
+    EXPECT_NE(stepped[0].pixels, stepped[1].pixels) << "the darker mark shows";
+    EXPECT_NE(stepped[1].pixels, stepped[2].pixels) << "the wider mark shows";
+}
+
 TEST(EndoscopeView, NearWallDoesNotGlare)
 {
     // The lens 5 mm from the wall, looking at it: without the automatic light

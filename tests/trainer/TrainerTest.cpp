@@ -17,7 +17,9 @@
 #include "trainer_ui/app/CurriculumMap.h"
 #include "trainer_ui/app/EndoscopeViewWidget.h"
 #include "trainer_ui/app/FirstStartDialog.h"
+#include "trainer_ui/app/HeadsUpDisplay.h"
 #include "trainer_ui/app/MainWindow.h"
+#include "trainer_ui/app/OffscreenGlWidget.h"
 #include "trainer_ui/app/ProcedureScreen.h"
 #include "trainer_ui/app/ReplayScreen.h"
 #include "trainer_ui/app/ResultsScreen.h"
@@ -33,6 +35,8 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QMessageBox>
+#include <QOpenGLContext>
+#include <QOpenGLFunctions>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSpinBox>
@@ -426,8 +430,8 @@ TEST(Trainer, TheInstructorReplaysTheStudentsSessionAndTheAdministratorReportsIt
     EXPECT_TRUE(child<QLabel>(window, "insertionDepth")->text().endsWith(QStringLiteral(" cm")));
     EXPECT_NE(child<QLabel>(window, "insertionDepth")->text(), QStringLiteral("0.0 cm"));
     EXPECT_EQ(child<QLabel>(window, "loopIndicator")->text(), QStringLiteral("no loop"));
-    EXPECT_TRUE(child<QLabel>(window, "procedureTimer")->text().startsWith(QStringLiteral("0:02")))
-        << child<QLabel>(window, "procedureTimer")->text().toStdString();
+    // The figures in words follow within a tenth of a second (HeadsUpDisplay::kTextRate).
+    ASSERT_SOON(child<QLabel>(window, "procedureTimer")->text().startsWith(QStringLiteral("0:02")));
     EXPECT_TRUE(child<QLabel>(window, "rates")->text().contains(QStringLiteral("frames/s")));
     ASSERT_SOON(child<QLabel>(window, "mucosaSeen")->text().endsWith(QStringLiteral("% of the wall")) &&
                 !child<QLabel>(window, "mucosaSeen")->text().startsWith(QStringLiteral("0.0%")));
@@ -655,6 +659,90 @@ TEST(Trainer, TheHapticDeviceDrivesASessionChosenInTheBriefAndItsReplayRunsFourT
     EXPECT_LT(normal, 1.2) << "1x never runs ahead of the wall clock";
     EXPECT_GT(fast, 2.0 * normal) << "4x: several times faster than 1x";
     EXPECT_LT(replay->shown()->frame.time, kRunLength);
+}
+
+TEST(HeadsUpDisplay, TheGaugesFollowEverySnapshotAndTheWordsTenTimesASecond)
+{
+    app::HeadsUpDisplay hud(15.0);
+    app::Snapshot snapshot;
+    snapshot.state = app::Snapshot::State::Running;
+    snapshot.frame.input.insertion = 0.10;
+    snapshot.frame.handleForce = 2.0;
+    hud.showSnapshot(snapshot, 30.0, 60.0);
+    auto* depth = child<QLabel>(hud, "insertionDepth");
+    auto* gauge = child<QProgressBar>(hud, "handleForceGauge");
+    EXPECT_EQ(depth->text(), QStringLiteral("10.0 cm"));
+    EXPECT_EQ(gauge->value(), 20);
+
+    // The next snapshot at once: the gauge moves, the words wait.
+    QElapsedTimer since;
+    since.start();
+    snapshot.frame.input.insertion = 0.11;
+    snapshot.frame.handleForce = 4.0;
+    hud.showSnapshot(snapshot, 30.0, 60.0);
+    EXPECT_EQ(gauge->value(), 40);
+    if (since.elapsed() < 1000 / app::HeadsUpDisplay::kTextRate) {
+        EXPECT_EQ(depth->text(), QStringLiteral("10.0 cm"));
+    }
+    // A tenth of a second on, the words follow.
+    QTest::qWait(1000 / app::HeadsUpDisplay::kTextRate + 10);
+    hud.showSnapshot(snapshot, 30.0, 60.0);
+    EXPECT_EQ(depth->text(), QStringLiteral("11.0 cm"));
+    // A paused procedure shows its last figures at once.
+    snapshot.state = app::Snapshot::State::Paused;
+    snapshot.frame.input.insertion = 0.12;
+    hud.showSnapshot(snapshot, 30.0, 60.0);
+    EXPECT_EQ(depth->text(), QStringLiteral("12.0 cm"));
+    EXPECT_TRUE(child<QLabel>(hud, "rates")->text().endsWith(QStringLiteral("paused")));
+}
+
+/// Half red, half blue (left | right), cleared with OpenGL into whatever
+/// framebuffer the widget gives it.
+class HalvesWidget final : public app::OffscreenGlWidget {
+public:
+    HalvesWidget() { setFixedSize(200, 100); }
+    void drawAt(double scale) { setRenderScale(scale); }
+    QSize drawnSize;
+
+protected:
+    void initializeGL() override {}
+    bool paintGL() override
+    {
+        drawnSize = framebufferSize();
+        QOpenGLFunctions* gl = QOpenGLContext::currentContext()->functions();
+        const int w = drawnSize.width();
+        const int h = drawnSize.height();
+        gl->glViewport(0, 0, w, h);
+        gl->glEnable(GL_SCISSOR_TEST);
+        gl->glScissor(0, 0, w / 2, h);
+        gl->glClearColor(1.0F, 0.0F, 0.0F, 1.0F);
+        gl->glClear(GL_COLOR_BUFFER_BIT);
+        gl->glScissor(w / 2, 0, w - w / 2, h);
+        gl->glClearColor(0.0F, 0.0F, 1.0F, 1.0F);
+        gl->glClear(GL_COLOR_BUFFER_BIT);
+        gl->glDisable(GL_SCISSOR_TEST);
+        return true;
+    }
+};
+
+TEST(OffscreenView, AViewDrawnAtASmallerScaleStillFillsItsWidget)
+{
+    HalvesWidget widget;
+    for (const double scale : {1.0, 0.5}) {
+        widget.drawAt(scale);
+        const QImage shown = widget.grab().toImage();
+        EXPECT_EQ(widget.drawnSize, QSize(static_cast<int>(200 * scale), static_cast<int>(100 * scale)));
+        ASSERT_EQ(shown.size(), QSize(200, 100));
+        // Every corner of the widget, and the middle of each half, shows its half's colour.
+        for (const int y : {2, 50, 97}) {
+            for (const int x : {2, 50}) {
+                EXPECT_EQ(shown.pixelColor(x, y), QColor(Qt::red)) << scale << " at " << x << ", " << y;
+            }
+            for (const int x : {150, 197}) {
+                EXPECT_EQ(shown.pixelColor(x, y), QColor(Qt::blue)) << scale << " at " << x << ", " << y;
+            }
+        }
+    }
 }
 
 TEST(Trainer, TheShapeViewIsShownOnlyWhenTheTaskAllowsIt)

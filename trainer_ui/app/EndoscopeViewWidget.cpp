@@ -41,8 +41,8 @@ void EndoscopeViewWidget::initializeGL()
 
 bool EndoscopeViewWidget::paintGL()
 {
-    const int width = static_cast<int>(this->width() * devicePixelRatioF());
-    const int height = static_cast<int>(this->height() * devicePixelRatioF());
+    const int width = framebufferSize().width();
+    const int height = framebufferSize().height();
     if (!m_view || m_snapshot == nullptr || m_snapshot->wall.cols() == 0) {
         QPainter painter(this);
         painter.fillRect(rect(), Qt::black);
@@ -72,8 +72,9 @@ bool EndoscopeViewWidget::paintGL()
     return true;
 }
 
-void EndoscopeViewWidget::frameShown()
+void EndoscopeViewWidget::frameShown(double start, double drawTime)
 {
+    setRenderScale(m_governor.frameDrawn(start, drawTime));
     m_lastFrameAt = std::chrono::steady_clock::now();
     m_lastFrameInsertion = m_drawnInsertion;
 }

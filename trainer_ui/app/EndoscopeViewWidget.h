@@ -4,11 +4,13 @@
 /// hosting render::EndoscopeView, drawing the latest snapshot of the loop
 /// (the wall mapped from the physics nodes, seen from the tip pose) into the
 /// widget's framebuffer. Counts the frames it draws (the graphics rate of
-/// the HUD).
+/// the HUD), and holds that rate by the resolution it draws at
+/// (RenderScaleGovernor).
 
 #include "simcore/render/EndoscopeView.h"
 #include "trainer_ui/app/OffscreenGlWidget.h"
 #include "trainer_ui/app/ProcedureScene.h"
+#include "trainer_ui/app/RenderScaleGovernor.h"
 #include "trainer_ui/app/SimulationRunner.h"
 
 #include <QElapsedTimer>
@@ -37,13 +39,15 @@ public:
     /// The last frame drawn: when it was finished (steady clock) and the insertion it shows (m).
     [[nodiscard]] std::chrono::steady_clock::time_point lastFrameAt() const { return m_lastFrameAt; }
     [[nodiscard]] double lastFrameInsertion() const { return m_lastFrameInsertion; }
+    /// The scale the view draws at now, each side (1: 640x480; see RenderScaleGovernor).
+    [[nodiscard]] double drawScale() const { return renderScale(); }
     /// When the view failed to start (no OpenGL 3.3): the reason, as a sentence.
     [[nodiscard]] const QString& failure() const { return m_failure; }
 
 protected:
     void initializeGL() override;
     bool paintGL() override;
-    void frameShown() override;
+    void frameShown(double start, double drawTime) override;
 
 private:
     std::shared_ptr<const ProcedureScene> m_scene;
@@ -52,6 +56,7 @@ private:
     const Snapshot* m_snapshot = nullptr;
     Eigen::Matrix3Xd m_visual;
     QString m_failure;
+    RenderScaleGovernor m_governor;
     QElapsedTimer m_clock;
     long m_frames = 0;
     long m_windowFrames = 0;

@@ -107,26 +107,17 @@ QString HeadsUpDisplay::loopWords(procedure::LoopKind kind)
     return tr("no loop");
 }
 
-void HeadsUpDisplay::showSnapshot(const Snapshot& snapshot, double graphicsRate, double timeLimit)
+void HeadsUpDisplay::showSnapshot(const Snapshot& snapshot, double graphicsRate, double timeLimit,
+                                  double viewScale)
 {
     const procedure::ProcedureFrame& frame = snapshot.frame;
-    m_depth->setText(tr("%1 cm").arg(frame.input.insertion * 100.0, 0, 'f', 1));
     // Below the display's resolution a force reads 0.0, never -0.0.
     const double force = std::abs(frame.handleForce) < 0.05 ? 0.0 : frame.handleForce;
     m_force->setValue(static_cast<int>(std::clamp(std::abs(force), 0.0, kForceScale) * 10.0));
     colour(m_force, std::abs(force) >= m_excessiveForce ? "#e0463c" : "#3fa34d");
-    // The gauge shows the magnitude; the words say which way it acts (+ resists insertion).
-    const QString direction = force > 0.0   ? tr(", resisting insertion")
-                              : force < 0.0 ? tr(", resisting withdrawal")
-                                            : QString();
-    m_forceText->setText(tr("%1 N%2 (excessive at %3 N)")
-                             .arg(std::abs(force), 0, 'f', 1)
-                             .arg(direction)
-                             .arg(m_excessiveForce, 0, 'f', 0));
     m_comfort->setValue(static_cast<int>(std::clamp(frame.discomfort, 0.0, 10.0) * 10.0));
     const int scale = procedure::comfortScale(frame.discomfort);
     colour(m_comfort, scale >= 4 ? "#e0463c" : (scale == 3 ? "#e0a43c" : "#3fa34d"));
-    m_comfortText->setText(tr("%1 / 10 — %2").arg(frame.discomfort, 0, 'f', 1).arg(comfortWords(scale)));
     m_loop->setText(loopWords(frame.loop));
     const QString loopStyle =
         frame.loop == procedure::LoopKind::None
@@ -135,18 +126,35 @@ void HeadsUpDisplay::showSnapshot(const Snapshot& snapshot, double graphicsRate,
     if (m_loop->styleSheet() != loopStyle) {  // re-polished on every set: only a change
         m_loop->setStyleSheet(loopStyle);
     }
+
+    const bool running = snapshot.state == Snapshot::State::Running;
+    if (running && m_textState == snapshot.state && m_textShown.elapsed() < 1000 / kTextRate) {
+        return;
+    }
+    m_textShown.restart();
+    m_textState = snapshot.state;
+    m_depth->setText(tr("%1 cm").arg(frame.input.insertion * 100.0, 0, 'f', 1));
+    // The gauge shows the magnitude; the words say which way it acts (+ resists insertion).
+    const QString direction = force > 0.0   ? tr(", resisting insertion")
+                              : force < 0.0 ? tr(", resisting withdrawal")
+                                            : QString();
+    m_forceText->setText(tr("%1 N%2 (excessive at %3 N)")
+                             .arg(std::abs(force), 0, 'f', 1)
+                             .arg(direction)
+                             .arg(m_excessiveForce, 0, 'f', 0));
+    m_comfortText->setText(tr("%1 / 10 — %2").arg(frame.discomfort, 0, 'f', 1).arg(comfortWords(scale)));
     m_mucosa->setText(snapshot.mucosaSeen < 0.0
                           ? tr("not measured")
                           : tr("%1% of the wall").arg(100.0 * snapshot.mucosaSeen, 0, 'f', 1));
     m_timer->setText(tr("%1 of %2").arg(clock(frame.time), clock(timeLimit)));
-    m_rates->setText(
-        snapshot.state == Snapshot::State::Running
-            ? tr("graphics %1 frames/s · physics %2 Hz")
-                  .arg(graphicsRate, 0, 'f', 0)
-                  .arg(snapshot.physicsRate, 0, 'f', 0)
-            : tr("graphics %1 frames/s · physics %2")
-                  .arg(graphicsRate, 0, 'f', 0)
-                  .arg(snapshot.state == Snapshot::State::Paused ? tr("paused") : tr("stopped")));
+    const QString graphics = viewScale < 1.0 ? tr("graphics %1 frames/s (view drawn at %2%)")
+                                                   .arg(graphicsRate, 0, 'f', 0)
+                                                   .arg(100.0 * viewScale, 0, 'f', 0)
+                                             : tr("graphics %1 frames/s").arg(graphicsRate, 0, 'f', 0);
+    m_rates->setText(running ? tr("%1 · physics %2 Hz").arg(graphics).arg(snapshot.physicsRate, 0, 'f', 0)
+                             : tr("%1 · physics %2")
+                                   .arg(graphics, snapshot.state == Snapshot::State::Paused ? tr("paused")
+                                                                                            : tr("stopped")));
 }
 
 }  // namespace colonosim::app

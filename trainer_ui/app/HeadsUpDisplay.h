@@ -4,10 +4,16 @@
 /// gauge (its colour turns at the recorder's excessive-force level), the
 /// comfort meter (0-10 and the Gloucester 5-point scale), the loop indicator
 /// with the loop's type, the timer against the task's limit, and the
-/// graphics and physics rates.
+/// graphics and physics rates. The gauges and the loop indicator follow
+/// every snapshot; the figures in words change at most kTextRate times a
+/// second while the procedure runs, and at once when it starts, pauses or
+/// ends. Figures changing faster cannot be read, and each change of a
+/// label's text costs its layout and shaping on the window's thread: a fifth
+/// of that thread's time at 60 changes a second.
 
 #include "trainer_ui/app/SimulationRunner.h"
 
+#include <QElapsedTimer>
 #include <QWidget>
 
 class QLabel;
@@ -18,10 +24,15 @@ namespace colonosim::app {
 class HeadsUpDisplay : public QWidget {
     Q_OBJECT
 public:
+    /// Changes a second, at most, of the figures in words while running.
+    static constexpr int kTextRate = 10;
+
     explicit HeadsUpDisplay(double excessiveForce, QWidget* parent = nullptr);
 
-    /// Shows `snapshot`; `graphicsRate` frames/s; `timeLimit` s.
-    void showSnapshot(const Snapshot& snapshot, double graphicsRate, double timeLimit);
+    /// Shows `snapshot`; `graphicsRate` frames/s; `timeLimit` s; `viewScale`
+    /// the endoscope view's drawing scale (said when under 1).
+    void showSnapshot(const Snapshot& snapshot, double graphicsRate, double timeLimit,
+                      double viewScale = 1.0);
 
     /// Plain words of the 5-point comfort scale (1..5).
     [[nodiscard]] static QString comfortWords(int scale);
@@ -38,7 +49,9 @@ private:
     QLabel* m_loop;
     QLabel* m_timer;
     QLabel* m_rates;
-    QLabel* m_mucosa;  ///< the renderer's coverage so far
+    QLabel* m_mucosa;                                       ///< the renderer's coverage so far
+    QElapsedTimer m_textShown;                              ///< since the figures in words last changed
+    Snapshot::State m_textState = Snapshot::State::Failed;  ///< the state they were shown for
 };
 
 }  // namespace colonosim::app

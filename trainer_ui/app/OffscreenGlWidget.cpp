@@ -8,6 +8,8 @@
 #include <QSurfaceFormat>
 
 #include <algorithm>
+#include <chrono>
+#include <cmath>
 
 #ifndef GL_BGRA
 #define GL_BGRA 0x80E1
@@ -60,6 +62,18 @@ unsigned OffscreenGlWidget::framebufferObject() const
     return m_fbo ? m_fbo->handle() : 0U;
 }
 
+QSize OffscreenGlWidget::framebufferSize() const
+{
+    const double scale = devicePixelRatioF() * m_renderScale;
+    return {std::max(1, static_cast<int>(std::lround(width() * scale))),
+            std::max(1, static_cast<int>(std::lround(height() * scale)))};
+}
+
+void OffscreenGlWidget::setRenderScale(double scale)
+{
+    m_renderScale = std::clamp(scale, 0.25, 1.0);
+}
+
 bool OffscreenGlWidget::makeCurrent()
 {
     return m_context && m_context->makeCurrent(m_surface.get());
@@ -74,6 +88,8 @@ void OffscreenGlWidget::doneCurrent()
 
 void OffscreenGlWidget::paintEvent(QPaintEvent* /*event*/)
 {
+    using Clock = std::chrono::steady_clock;
+    const Clock::time_point began = Clock::now();
     if (!ensureContext()) {
         QPainter painter(this);
         painter.fillRect(rect(), Qt::black);
@@ -82,8 +98,7 @@ void OffscreenGlWidget::paintEvent(QPaintEvent* /*event*/)
         return;
     }
     const qreal ratio = devicePixelRatioF();
-    const QSize size(std::max(1, static_cast<int>(width() * ratio)),
-                     std::max(1, static_cast<int>(height() * ratio)));
+    const QSize size = framebufferSize();
     m_context->makeCurrent(m_surface.get());
     if (!m_fbo || m_fbo->size() != size) {
         m_fbo =
@@ -108,11 +123,17 @@ void OffscreenGlWidget::paintEvent(QPaintEvent* /*event*/)
     m_context->doneCurrent();
     if (drew) {
         QImage shown = m_image.mirrored(false, true);
-        shown.setDevicePixelRatio(ratio);
         QPainter painter(this);
-        painter.drawImage(QPointF(0.0, 0.0), shown);
+        if (m_renderScale < 1.0) {
+            painter.setRenderHint(QPainter::SmoothPixmapTransform);
+            painter.drawImage(QRectF(rect()), shown);
+        } else {
+            shown.setDevicePixelRatio(ratio);
+            painter.drawImage(QPointF(0.0, 0.0), shown);
+        }
         painter.end();
-        frameShown();
+        const auto seconds = [](Clock::duration d) { return std::chrono::duration<double>(d).count(); };
+        frameShown(seconds(began.time_since_epoch()), seconds(Clock::now() - began));
     }
 }
 

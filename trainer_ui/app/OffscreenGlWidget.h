@@ -38,10 +38,20 @@ protected:
     /// framebuffer bound. Returns false when it drew nothing with OpenGL
     /// (it may then have painted the widget with a QPainter of its own).
     virtual bool paintGL() = 0;
-    /// Called after a frame paintGL() drew has been painted on the widget.
-    virtual void frameShown() {}
+    /// Called after a frame paintGL() drew has been painted on the widget:
+    /// when its paint event began and how long it took, readback and
+    /// painting included (s, steady clock).
+    virtual void frameShown(double /*start*/, double /*drawTime*/) {}
     /// The framebuffer object to draw into (OpenGL name), during paintGL().
     [[nodiscard]] unsigned framebufferObject() const;
+    /// The framebuffer's size in pixels: the widget's, times the device pixel
+    /// ratio and the render scale.
+    [[nodiscard]] QSize framebufferSize() const;
+    /// Draws into a framebuffer `scale` (0.25-1) times the widget's size on
+    /// each side and paints it stretched over the widget, smoothly filtered:
+    /// fewer pixels to rasterise for a softer picture.
+    void setRenderScale(double scale);
+    [[nodiscard]] double renderScale() const { return m_renderScale; }
     /// Makes the widget's context current (e.g. to release its resources).
     /// False when the context could not be made (no OpenGL 3.3).
     bool makeCurrent();
@@ -59,6 +69,7 @@ private:
     std::unique_ptr<QOffscreenSurface> m_surface;
     std::unique_ptr<QOpenGLFramebufferObject> m_fbo;
     QImage m_image;  ///< the last frame read back, bottom row first
+    double m_renderScale = 1.0;
     bool m_initialized = false;
     QString m_contextFailure;
 };
