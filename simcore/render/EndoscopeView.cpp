@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <numeric>
 
 namespace colonosim::render {
 
@@ -87,6 +88,15 @@ EndoscopeView::EndoscopeView(const GlFunctions& gl, const WallSurface& surface,
         const double z = m_chart[3 * v + 2];
         m_chartRadius[v] = std::hypot(y, z);
         m_chartAngle[v] = std::atan2(z, y);
+    }
+    m_byArc.resize(numVertices);
+    std::iota(m_byArc.begin(), m_byArc.end(), 0);
+    std::stable_sort(m_byArc.begin(), m_byArc.end(), [this](int a, int b) {
+        return m_chart[3 * static_cast<size_t>(a)] < m_chart[3 * static_cast<size_t>(b)];
+    });
+    m_arcSorted.resize(numVertices);
+    for (size_t i = 0; i < numVertices; ++i) {
+        m_arcSorted[i] = m_chart[3 * static_cast<size_t>(m_byArc[i])];
     }
     gl.GenBuffers(1, &m_bleedingBuffer);
     gl.BindBuffer(GL_ARRAY_BUFFER, m_bleedingBuffer);
@@ -218,21 +228,26 @@ void EndoscopeView::setBleedingMarks(const std::vector<BleedingMark>& marks)
     // A fragment within a mark's radius lies in a triangle with a vertex
     // within the radius plus one edge (the visual mesh's edges are 2-3 mm).
     constexpr double kReach = 4e-3;  // m beyond the radius
+    // Only the vertices within a mark's reach along the chart are looked at
+    // (m_byArc); the window is widened by a nanometre so that rounding at its
+    // ends drops none, and the test itself is the exact one.
+    constexpr double kWiden = 1e-9;  // m
     std::fill(m_bleedingNear.begin(), m_bleedingNear.end(), 0.0F);
-    for (size_t v = 0; v < m_bleedingNear.size(); ++v) {
-        const double s = m_chart[3 * v];
-        const double r = m_chartRadius[v];
-        const double angle = m_chartAngle[v];
-        for (size_t k = 0; k < m_marks.size(); ++k) {
-            const double ds = s - m_markPlaces[k].arcLength;
-            const double reach = m_marks[k].radius + kReach;
-            if (std::abs(ds) > reach) {
+    for (size_t k = 0; k < m_marks.size(); ++k) {
+        const double at = m_markPlaces[k].arcLength;
+        const double reach = m_marks[k].radius + kReach;
+        const auto from = std::lower_bound(m_arcSorted.begin(), m_arcSorted.end(), at - reach - kWiden);
+        const auto to = std::upper_bound(from, m_arcSorted.end(), at + reach + kWiden);
+        for (auto it = from; it != to; ++it) {
+            const auto v = static_cast<size_t>(m_byArc[static_cast<size_t>(it - m_arcSorted.begin())]);
+            const double ds = static_cast<double>(m_chart[3 * v]) - at;
+            if (m_bleedingNear[v] != 0.0F || std::abs(ds) > reach) {
                 continue;
             }
-            const double arc = r * std::remainder(angle - m_markPlaces[k].angle, 2.0 * std::numbers::pi);
+            const double arc = m_chartRadius[v] * std::remainder(m_chartAngle[v] - m_markPlaces[k].angle,
+                                                                 2.0 * std::numbers::pi);
             if (ds * ds + arc * arc <= reach * reach) {
                 m_bleedingNear[v] = 1.0F;
-                break;
             }
         }
     }

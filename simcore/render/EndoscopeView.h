@@ -156,7 +156,9 @@ private:
     /// round it (rad): the marks' reach is measured with them.
     std::vector<double> m_chartRadius;
     std::vector<double> m_chartAngle;
-    Eigen::Vector3d m_up;  ///< against gravity: the fluid surface's normal
+    std::vector<int> m_byArc;         ///< the vertices in the order of their chart's arc length
+    std::vector<double> m_arcSorted;  ///< their arc lengths, m, in that order
+    Eigen::Vector3d m_up;             ///< against gravity: the fluid surface's normal
     double m_redOut = 0.0;
 };
 
