@@ -143,7 +143,7 @@ int run(const Options& options)
         // A window in which the session ended ran part of its time without it.
         const bool ended = time1 >= options.seconds - 0.05 || time1 == time0;
         std::printf("%5.1f - %-8.1f %5.0f - %-10.0f %12.1f %14.0f %12.2f%s\n", time0, time1, 1e3 * insertion0,
-                    1e3 * screen.shownInsertion(), frames, steps, view->drawScale(),
+                    1e3 * screen.shownInsertion(), frames, steps, view->renderScale(),
                     ended ? "  (ended)" : "");
         std::fflush(stdout);
         if (time0 >= options.from && !ended) {

@@ -39,8 +39,6 @@ public:
     /// The last frame drawn: when it was finished (steady clock) and the insertion it shows (m).
     [[nodiscard]] std::chrono::steady_clock::time_point lastFrameAt() const { return m_lastFrameAt; }
     [[nodiscard]] double lastFrameInsertion() const { return m_lastFrameInsertion; }
-    /// The scale the view draws at now, each side (1: 640x480; see RenderScaleGovernor).
-    [[nodiscard]] double drawScale() const { return renderScale(); }
     /// When the view failed to start (no OpenGL 3.3): the reason, as a sentence.
     [[nodiscard]] const QString& failure() const { return m_failure; }
 

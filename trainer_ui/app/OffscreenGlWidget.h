@@ -31,6 +31,9 @@ public:
     explicit OffscreenGlWidget(QWidget* parent = nullptr);
     ~OffscreenGlWidget() override;
 
+    /// The scale the widget draws at, each side (see setRenderScale()).
+    [[nodiscard]] double renderScale() const { return m_renderScale; }
+
 protected:
     /// Called once, with the context current, before the first paintGL().
     virtual void initializeGL() = 0;
@@ -51,7 +54,6 @@ protected:
     /// each side and paints it stretched over the widget, smoothly filtered:
     /// fewer pixels to rasterise for a softer picture.
     void setRenderScale(double scale);
-    [[nodiscard]] double renderScale() const { return m_renderScale; }
     /// Makes the widget's context current (e.g. to release its resources).
     /// False when the context could not be made (no OpenGL 3.3).
     bool makeCurrent();

@@ -229,7 +229,7 @@ void ProcedureScreen::tick()
             m_shapeCaption->setText(tr("Scope shape — anterior | lateral (from the patient's left) — %1")
                                         .arg(HeadsUpDisplay::loopWords(now.frame.loop)));
         }
-        m_hud->showSnapshot(now, m_view->framesPerSecond(), m_options.timeLimit, m_view->drawScale());
+        m_hud->showSnapshot(now, m_view->framesPerSecond(), m_options.timeLimit, m_view->renderScale());
         m_status->setText(now.state == Snapshot::State::Preparing ? tr("Preparing the colon…")
                                                                   : tr("Procedure running."));
     }

@@ -234,7 +234,7 @@ void ReplayScreen::tick()
     const Snapshot& now = m_runner->snapshot();
     m_view->showSnapshot(&now);
     m_shape->showSnapshot(&now);
-    m_hud->showSnapshot(now, m_view->framesPerSecond(), duration(), m_view->drawScale());
+    m_hud->showSnapshot(now, m_view->framesPerSecond(), duration(), m_view->renderScale());
     if (!m_slider->isSliderDown()) {
         m_slider->setValue(static_cast<int>(now.frame.time * kSliderSteps));
     }
