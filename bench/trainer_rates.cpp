@@ -56,7 +56,17 @@ Options parse(int argc, char** argv)
         if (i + 1 >= argc) {
             throw std::invalid_argument(flag + " needs a value");
         }
-        const double value = std::stod(argv[++i]);
+        const std::string text = argv[++i];
+        double value = 0.0;
+        std::size_t used = 0;
+        try {
+            value = std::stod(text, &used);
+        } catch (const std::exception&) {
+            used = 0;
+        }
+        if (used == 0 || used != text.size()) {
+            throw std::invalid_argument(flag + " = " + text + ": not a number of seconds");
+        }
         if (flag == "--seconds" && value >= 1.0 && value <= 600.0) {
             options.seconds = value;
         } else if (flag == "--window" && value >= 0.5 && value <= 60.0) {
@@ -64,7 +74,7 @@ Options parse(int argc, char** argv)
         } else if (flag == "--from" && value >= 0.0 && value <= 600.0) {
             options.from = value;
         } else {
-            throw std::invalid_argument(flag + " = " + argv[i] +
+            throw std::invalid_argument(flag + " = " + text +
                                         ": expected --seconds in [1, 600], --window in [0.5, 60] or "
                                         "--from in [0, 600]");
         }
