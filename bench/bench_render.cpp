@@ -64,6 +64,7 @@ void endoscopeFrame(benchmark::State& state)
     state.counters["frames_per_s"] =
         benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
     state.counters["visual_vertices"] = static_cast<double>(surface.rest.numVertices());
+    state.counters["triangles"] = static_cast<double>(view.drawnTriangles());
     state.SetLabel(reinterpret_cast<const char*>(context.gl().GetString(GL_RENDERER)));
 }
 BENCHMARK(endoscopeFrame)->Unit(benchmark::kMillisecond)->UseRealTime();
@@ -115,6 +116,8 @@ void wallUpdate(benchmark::State& state)
 }
 BENCHMARK(wallUpdate)->ArgName("mapping")->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond)->UseRealTime();
 
+/// The draw alone at width x height, the levels of detail allowed
+/// range(2) / 10 pixels of error (0: the full mesh everywhere).
 void endoscopeFrameDrawOnly(benchmark::State& state)
 {
     const int width = static_cast<int>(state.range(0));
@@ -122,17 +125,24 @@ void endoscopeFrameDrawOnly(benchmark::State& state)
     render::OffscreenContext context(width, height);
     const render::WallSurface surface =
         render::buildWallSurface(anatomy().visualMesh, anatomy().centreline, render::WallFindings{});
-    render::EndoscopeView view(context.gl(), surface, render::RenderParameters{});
+    render::RenderParameters parameters;
+    parameters.levelOfDetailError = static_cast<double>(state.range(2)) / 10.0;
+    render::EndoscopeView view(context.gl(), surface, parameters);
     const render::CameraPose pose = poseAlongColon(0.08);
     for (auto _ : state) {
         view.render(pose, {}, width, height);
         context.gl().Finish();
     }
+    state.counters["triangles"] = static_cast<double>(view.drawnTriangles());
 }
 BENCHMARK(endoscopeFrameDrawOnly)
-    ->Args({kWidth, kHeight})
-    ->Args({320, 240})
-    ->Args({64, 48})
+    ->ArgNames({"width", "height", "lod_error_tenths_px"})
+    ->Args({kWidth, kHeight, 10})
+    ->Args({kWidth, kHeight, 0})
+    ->Args({320, 240, 10})
+    ->Args({320, 240, 0})
+    ->Args({64, 48, 10})
+    ->Args({64, 48, 0})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 

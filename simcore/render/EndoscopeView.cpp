@@ -28,8 +28,9 @@ void setCamera(const GlFunctions& gl, const ShaderProgram& program, const Camera
 
 EndoscopeView::EndoscopeView(const GlFunctions& gl, const WallSurface& surface,
                              const RenderParameters& parameters)
-    : m_gl(gl), m_parameters(parameters), m_triangles(surface.rest.triangles), m_chart(surface.chart),
-      m_restVertices(surface.rest.vertices), m_up(surface.up.normalized())
+    : m_gl(gl), m_parameters(parameters), m_levels(surface.rest.triangles, surface.rest.vertices),
+      m_triangles(surface.rest.triangles), m_chart(surface.chart), m_restVertices(surface.rest.vertices),
+      m_up(surface.up.normalized())
 {
     m_parameters.validate();
     // The residual fluid's shading is compiled in only where the wall has fluid (Shaders.h).
@@ -105,27 +106,9 @@ EndoscopeView::EndoscopeView(const GlFunctions& gl, const WallSurface& surface,
     gl.VertexAttribPointer(4, 1, GL_FLOAT, GL_FALSE, sizeof(float), nullptr);
     gl.EnableVertexAttribArray(4);
 
-    std::vector<GLuint> indices;
-    indices.reserve(m_triangles.size() * 3);
-    for (const auto& t : m_triangles) {
-        indices.insert(indices.end(),
-                       {static_cast<GLuint>(t[0]), static_cast<GLuint>(t[1]), static_cast<GLuint>(t[2])});
-    }
-    m_numIndices = static_cast<GLsizei>(indices.size());
-    for (size_t first = 0; first < m_triangles.size(); first += kChunkTriangles) {
-        const size_t last = std::min(m_triangles.size(), first + kChunkTriangles);
-        Chunk chunk;
-        chunk.first = static_cast<GLsizei>(first * 3);
-        chunk.count = static_cast<GLsizei>((last - first) * 3);
-        for (size_t t = first; t < last; ++t) {
-            chunk.vertices.insert(chunk.vertices.end(), m_triangles[t].begin(), m_triangles[t].end());
-        }
-        std::sort(chunk.vertices.begin(), chunk.vertices.end());
-        chunk.vertices.erase(std::unique(chunk.vertices.begin(), chunk.vertices.end()), chunk.vertices.end());
-        m_chunks.push_back(std::move(chunk));
-    }
     gl.GenBuffers(1, &m_indexBuffer);
     gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, m_indexBuffer);
+    const std::vector<std::uint32_t>& indices = m_levels.indices();
     gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(indices.size() * sizeof(GLuint)),
                   indices.data(), GL_STATIC_DRAW);
     gl.BindVertexArray(0);
@@ -334,21 +317,15 @@ void EndoscopeView::render(const CameraPose& pose, const LensState& lens, int wi
     gl.Uniform1i(m_wall->uniform("uMucosa"), 1);
     gl.ActiveTexture(GL_TEXTURE0);
     gl.BindVertexArray(m_vao);
-    // Draw the chunks that may reach the image, merging neighbouring ones.
+    // Draw the chunks that may reach the image, each at the coarsest level
+    // whose error stays within levelOfDetailError pixels (TubeLevelsOfDetail.h).
     const double coneAngle = 1.05 * m_parameters.fieldOfView / 2.0;  // the clip distance of Shaders.h
-    GLsizei runFirst = 0;
-    GLsizei runCount = 0;
-    const auto flush = [&]() {
-        if (runCount > 0) {
-            gl.DrawElements(GL_TRIANGLES, runCount, GL_UNSIGNED_INT,
-                            reinterpret_cast<void*>(static_cast<size_t>(runFirst) * sizeof(GLuint)));
-        }
-        runCount = 0;
-    };
-    for (const Chunk& chunk : m_chunks) {
+    const int numChunks = m_levels.numChunks();
+    m_chunkNearest.resize(static_cast<size_t>(numChunks));
+    for (int c = 0; c < numChunks; ++c) {
         Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::max());
         Eigen::Vector3d hi = -lo;
-        for (int v : chunk.vertices) {
+        for (int v : m_levels.chunkVertices(c)) {
             lo = lo.cwiseMin(m_positions.col(v));
             hi = hi.cwiseMax(m_positions.col(v));
         }
@@ -361,16 +338,17 @@ void EndoscopeView::render(const CameraPose& pose, const LensState& lens, int wi
             const double angle = std::acos(std::clamp(offset.dot(forward) / distance, -1.0, 1.0));
             visible = angle - std::asin(radius / distance) < coneAngle;
         }
-        if (!visible) {
-            flush();
-            continue;
-        }
-        if (runCount == 0) {
-            runFirst = chunk.first;
-        }
-        runCount += chunk.count;
+        m_chunkNearest[static_cast<size_t>(c)] = visible ? std::max(distance - radius, 0.0) : -1.0;
     }
-    flush();
+    // The fisheye is equidistant and its image circle fills the height.
+    const double pixelAngle = m_parameters.fieldOfView / static_cast<double>(height);
+    m_drawnTriangles = 0;
+    for (const TubeLevelsOfDetail::Range& range :
+         m_levels.drawList(m_chunkNearest, m_parameters.levelOfDetailError * pixelAngle)) {
+        m_drawnTriangles += range.count / 3;
+        gl.DrawElements(GL_TRIANGLES, range.count, GL_UNSIGNED_INT,
+                        reinterpret_cast<void*>(static_cast<size_t>(range.first) * sizeof(GLuint)));
+    }
     gl.Disable(GL_CLIP_DISTANCE0);
     gl.Disable(GL_DEPTH_TEST);
 

@@ -17,11 +17,14 @@
 ///   droplets whose extent grows with the soiling amount; under it the image
 ///   is blurred and veiled), red-out, and the black surround of the image
 ///   circle.
-/// Culling: the triangles are drawn in chunks of kChunkTriangles
-/// consecutive triangles (ring-ordered meshes make them compact); a chunk is
+/// Culling: the triangles are drawn in chunks (TubeLevelsOfDetail.h; 16
+/// rings of a tube grid, else 2048 consecutive triangles); a chunk is
 /// skipped when its bounding sphere lies wholly beyond the far distance or
 /// wholly outside the cone of the clipped field (1.05 x half the field of
 /// view, as the clip distance).
+/// Levels of detail: a chunk of a tube grid is drawn at the coarsest level
+/// whose geometric error, seen from the sphere's nearest point, stays within
+/// levelOfDetailError pixels (field of view / height radians each).
 /// Automatic light control: with the nearest wall within autoLightCone of
 /// the view axis at d below
 /// autoLightDistance D_a, the light is scaled by max((d / D_a)^2, 0.02), as a
@@ -57,6 +60,7 @@
 #include "simcore/render/GlFunctions.h"
 #include "simcore/render/RenderParameters.h"
 #include "simcore/render/ShaderProgram.h"
+#include "simcore/render/TubeLevelsOfDetail.h"
 #include "simcore/render/WallSurface.h"
 
 #include <Eigen/Core>
@@ -102,6 +106,8 @@ public:
     /// width x height pixels.
     void render(const CameraPose& pose, const LensState& lens, int width, int height, GLuint framebuffer = 0);
 
+    /// Triangles drawn by the last render (after culling and levels of detail).
+    [[nodiscard]] int drawnTriangles() const { return m_drawnTriangles; }
     /// Red-out amount (0..1) of the last render.
     [[nodiscard]] double redOut() const { return m_redOut; }
     /// Distance from `point` to the nearest wall vertex within `coneAngle`
@@ -128,20 +134,14 @@ private:
     GLuint m_staticBuffer = 0;
     GLuint m_indexBuffer = 0;
     GLuint m_bleedingBuffer = 0;  ///< 1 float per vertex: 1 within reach of a mark
-    GLsizei m_numIndices = 0;
-    GLuint m_mucosa = 0;  ///< the baked, tiling mucosa texture (Shaders.h, kMucosaBake)
+    GLuint m_mucosa = 0;          ///< the baked, tiling mucosa texture (Shaders.h, kMucosaBake)
     GLuint m_targetFramebuffer = 0;
     GLuint m_targetColour = 0;
     GLuint m_targetDepth = 0;
     int m_targetWidth = 0;
     int m_targetHeight = 0;
-    static constexpr int kChunkTriangles = 2048;
-    struct Chunk {
-        std::vector<int> vertices;  ///< unique vertex indices of its triangles
-        GLsizei first = 0;          ///< first index in the index buffer
-        GLsizei count = 0;          ///< number of indices
-    };
-    std::vector<Chunk> m_chunks;
+    TubeLevelsOfDetail m_levels;         ///< the chunks and their levels of detail
+    std::vector<double> m_chunkNearest;  ///< per chunk, per frame (TubeLevelsOfDetail::drawList)
     std::vector<std::array<int, 3>> m_triangles;
     Eigen::Matrix3Xd m_positions;
     Eigen::Matrix3Xd m_normals;
@@ -160,6 +160,7 @@ private:
     std::vector<double> m_arcSorted;  ///< their arc lengths, m, in that order
     Eigen::Vector3d m_up;             ///< against gravity: the fluid surface's normal
     double m_redOut = 0.0;
+    int m_drawnTriangles = 0;
 };
 
 }  // namespace colonosim::render

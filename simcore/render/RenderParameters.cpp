@@ -9,7 +9,7 @@ namespace colonosim::render {
 namespace {
 using R = RenderParameters;
 using params::Field;
-constexpr std::array<Field<R>, 18> kRenderFields{{
+constexpr std::array<Field<R>, 19> kRenderFields{{
     {&R::fieldOfViewSpec, &R::fieldOfView},
     {&R::lightIntensitySpec, &R::lightIntensity},
     {&R::autoLightDistanceSpec, &R::autoLightDistance},
@@ -22,6 +22,7 @@ constexpr std::array<Field<R>, 18> kRenderFields{{
     {&R::contactDistanceSpec, &R::contactDistance},
     {&R::nearDistanceSpec, &R::nearDistance},
     {&R::farDistanceSpec, &R::farDistance},
+    {&R::levelOfDetailErrorSpec, &R::levelOfDetailError},
     {&R::workingDistanceSpec, &R::workingDistance},
     {&R::maxIncidenceSpec, &R::maxIncidence},
     {&R::coverageIntervalSpec, &R::coverageInterval},

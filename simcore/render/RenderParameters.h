@@ -109,6 +109,15 @@ struct RenderParameters {
                                           "farthest depth drawn",
                                           "inverse-square light at the default exposure: wall beyond 30 cm "
                                           "is below 2% of full scale"};
+    static constexpr Spec levelOfDetailErrorSpec{
+        "levelOfDetailError",
+        "px",
+        1.0,
+        0.0,
+        8.0,
+        "largest geometric error of a coarser level of the wall mesh, seen on the screen (0: full "
+        "detail everywhere)",
+        "geometrical mipmapping (de Boer 2000): a level is used while its error projects under a pixel"};
     static constexpr Spec workingDistanceSpec{
         "workingDistance",
         "m",
@@ -169,6 +178,7 @@ struct RenderParameters {
     double contactDistance = contactDistanceSpec.defaultValue;
     double nearDistance = nearDistanceSpec.defaultValue;
     double farDistance = farDistanceSpec.defaultValue;
+    double levelOfDetailError = levelOfDetailErrorSpec.defaultValue;
     double workingDistance = workingDistanceSpec.defaultValue;
     double maxIncidence = maxIncidenceSpec.defaultValue;
     double coverageInterval = coverageIntervalSpec.defaultValue;
