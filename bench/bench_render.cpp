@@ -12,6 +12,7 @@
 #include <benchmark/benchmark.h>
 
 #include <cstring>
+#include <limits>
 #include <vector>
 
 namespace {
@@ -117,7 +118,9 @@ void wallUpdate(benchmark::State& state)
 BENCHMARK(wallUpdate)->ArgName("mapping")->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 /// The draw alone at width x height, the levels of detail allowed
-/// range(2) / 10 pixels of error (0: the full mesh everywhere).
+/// range(2) / 10 pixels of error (0: the full mesh everywhere), the lens
+/// soiled range(3) percent (the droplet mask drawn once, as it is while the
+/// soiling holds).
 void endoscopeFrameDrawOnly(benchmark::State& state)
 {
     const int width = static_cast<int>(state.range(0));
@@ -129,20 +132,24 @@ void endoscopeFrameDrawOnly(benchmark::State& state)
     parameters.levelOfDetailError = static_cast<double>(state.range(2)) / 10.0;
     render::EndoscopeView view(context.gl(), surface, parameters);
     const render::CameraPose pose = poseAlongColon(0.08);
+    const render::LensState lens{static_cast<double>(state.range(3)) / 100.0, 0.0,
+                                 std::numeric_limits<double>::infinity()};
     for (auto _ : state) {
-        view.render(pose, {}, width, height);
+        view.render(pose, lens, width, height);
         context.gl().Finish();
     }
     state.counters["triangles"] = static_cast<double>(view.drawnTriangles());
 }
 BENCHMARK(endoscopeFrameDrawOnly)
-    ->ArgNames({"width", "height", "lod_error_tenths_px"})
-    ->Args({kWidth, kHeight, 10})
-    ->Args({kWidth, kHeight, 0})
-    ->Args({320, 240, 10})
-    ->Args({320, 240, 0})
-    ->Args({64, 48, 10})
-    ->Args({64, 48, 0})
+    ->ArgNames({"width", "height", "lod_error_tenths_px", "soiling_percent"})
+    ->Args({kWidth, kHeight, 10, 0})
+    ->Args({kWidth, kHeight, 0, 0})
+    ->Args({kWidth, kHeight, 10, 50})
+    ->Args({320, 240, 10, 0})
+    ->Args({320, 240, 0, 0})
+    ->Args({320, 240, 10, 50})
+    ->Args({64, 48, 10, 0})
+    ->Args({64, 48, 0, 0})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 

@@ -42,6 +42,12 @@ EndoscopeView::EndoscopeView(const GlFunctions& gl, const WallSurface& surface,
     m_lens = std::make_unique<ShaderProgram>(
         gl, std::initializer_list<const char*>{shaders::kScreenVertex},
         std::initializer_list<const char*>{shaders::kNoise, shaders::kLensFragment});
+    m_lensMask = std::make_unique<ShaderProgram>(
+        gl, std::initializer_list<const char*>{shaders::kScreenVertex},
+        std::initializer_list<const char*>{shaders::kNoise, shaders::kLensMaskFragment});
+    m_lensReduce =
+        std::make_unique<ShaderProgram>(gl, std::initializer_list<const char*>{shaders::kScreenVertex},
+                                        std::initializer_list<const char*>{shaders::kLensReduceFragment});
     m_cleanLens = std::make_unique<ShaderProgram>(
         gl, std::initializer_list<const char*>{shaders::kScreenVertex},
         std::initializer_list<const char*>{"#define LENS_CLEAN\n", shaders::kNoise, shaders::kLensFragment});
@@ -156,6 +162,10 @@ EndoscopeView::~EndoscopeView()
     m_gl.DeleteVertexArrays(1, &m_vao);
     m_gl.DeleteVertexArrays(1, &m_screenVao);
     m_gl.DeleteTextures(1, &m_mucosa);
+    m_gl.DeleteTextures(1, &m_maskTexture);
+    m_gl.DeleteTextures(1, &m_blurTexture);
+    m_gl.DeleteFramebuffers(1, &m_blurFramebuffer);
+    m_gl.DeleteFramebuffers(1, &m_maskFramebuffer);
     m_gl.DeleteFramebuffers(1, &m_targetFramebuffer);
     m_gl.DeleteTextures(1, &m_targetColour);
     m_gl.DeleteRenderbuffers(1, &m_targetDepth);
@@ -266,6 +276,91 @@ void EndoscopeView::resizeTarget(int width, int height)
     m_targetHeight = height;
 }
 
+void EndoscopeView::updateLensMask(const LensState& lens, int width, int height)
+{
+    // The mask follows the soiling in steps of 1/64 (a drop's radius moves
+    // by about 1% a step): it is drawn again only when one is crossed.
+    const double amount = std::max(std::round(std::clamp(lens.soiling, 0.0, 1.0) * 64.0), 1.0) / 64.0;
+    if (m_maskTexture != 0 && width == m_maskWidth && height == m_maskHeight && amount == m_maskSoiling &&
+        lens.soilingSeed == m_maskSeed) {
+        return;
+    }
+    const GlFunctions& gl = m_gl;
+    if (m_maskTexture == 0) {
+        gl.GenTextures(1, &m_maskTexture);
+        gl.GenFramebuffers(1, &m_maskFramebuffer);
+    }
+    gl.BindTexture(GL_TEXTURE_2D, m_maskTexture);
+    if (width != m_maskWidth || height != m_maskHeight) {
+        gl.TexImage2D(GL_TEXTURE_2D, 0, GL_R8, width, height, 0, GL_RED, GL_UNSIGNED_BYTE, nullptr);
+        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        gl.BindFramebuffer(GL_FRAMEBUFFER, m_maskFramebuffer);
+        gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, m_maskTexture, 0);
+        if (gl.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+            throw RenderError("the lens soiling's mask cannot be rendered to");
+        }
+        m_maskWidth = width;
+        m_maskHeight = height;
+    }
+    gl.BindFramebuffer(GL_FRAMEBUFFER, m_maskFramebuffer);
+    gl.Viewport(0, 0, width, height);
+    m_lensMask->use();
+    gl.Uniform1f(m_lensMask->uniform("uAspect"), static_cast<float>(width) / static_cast<float>(height));
+    gl.Uniform1f(m_lensMask->uniform("uSoiling"), static_cast<float>(amount));
+    gl.Uniform1f(m_lensMask->uniform("uSeed"), static_cast<float>(lens.soilingSeed));
+    gl.BindVertexArray(m_screenVao);
+    gl.DrawArrays(GL_TRIANGLES, 0, 3);
+    gl.BindVertexArray(0);
+    m_maskSoiling = amount;
+    m_maskSeed = lens.soilingSeed;
+}
+
+void EndoscopeView::reduceForBlur(double blurRadius, int width, int height)
+{
+    // A texel of about 0.45 of the blur radius, a power of two pixels
+    // (mipmaps would do, but llvmpipe builds them slowly: about 10 ms at
+    // 640x480, against a fraction of one for this pass).
+    const int factor =
+        1 << std::clamp(static_cast<int>(std::lround(std::log2(std::max(0.45 * blurRadius, 1.0)))), 0, 4);
+    const int w = std::max(width / factor, 1);
+    const int h = std::max(height / factor, 1);
+    const GlFunctions& gl = m_gl;
+    if (m_blurTexture == 0) {
+        gl.GenTextures(1, &m_blurTexture);
+        gl.GenFramebuffers(1, &m_blurFramebuffer);
+    }
+    if (w != m_blurWidth || h != m_blurHeight) {
+        gl.BindTexture(GL_TEXTURE_2D, m_blurTexture);
+        gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        gl.BindFramebuffer(GL_FRAMEBUFFER, m_blurFramebuffer);
+        gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, m_blurTexture, 0);
+        if (gl.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+            throw RenderError("the lens soiling's blur cannot be rendered to");
+        }
+        m_blurWidth = w;
+        m_blurHeight = h;
+    }
+    gl.BindFramebuffer(GL_FRAMEBUFFER, m_blurFramebuffer);
+    gl.Viewport(0, 0, w, h);
+    m_lensReduce->use();
+    gl.ActiveTexture(GL_TEXTURE0);
+    gl.BindTexture(GL_TEXTURE_2D, m_targetColour);
+    gl.Uniform1i(m_lensReduce->uniform("uScene"), 0);
+    gl.Uniform2f(m_lensReduce->uniform("uOffset"),
+                 static_cast<float>(factor) / 4.0F / static_cast<float>(width),
+                 static_cast<float>(factor) / 4.0F / static_cast<float>(height));
+    gl.BindVertexArray(m_screenVao);
+    gl.DrawArrays(GL_TRIANGLES, 0, 3);
+    gl.BindVertexArray(0);
+}
+
 void EndoscopeView::render(const CameraPose& pose, const LensState& lens, int width, int height,
                            GLuint framebuffer)
 {
@@ -352,9 +447,18 @@ void EndoscopeView::render(const CameraPose& pose, const LensState& lens, int wi
     gl.Disable(GL_CLIP_DISTANCE0);
     gl.Disable(GL_DEPTH_TEST);
 
+    const bool soiled = lens.soiling > 0.0;
+    const bool clean = !soiled && m_redOut <= 0.0;
+    if (soiled) {
+        updateLensMask(lens, width, height);
+    }
+    const double blurRadius = kSoilingBlurRadius * static_cast<double>(height);  // pixels
+    if (soiled) {
+        reduceForBlur(blurRadius, width, height);
+    }
+
     gl.BindFramebuffer(GL_FRAMEBUFFER, framebuffer);
     gl.Viewport(0, 0, width, height);
-    const bool clean = lens.soiling <= 0.0 && m_redOut <= 0.0;
     const ShaderProgram& lensPass = clean ? *m_cleanLens : *m_lens;
     lensPass.use();
     gl.ActiveTexture(GL_TEXTURE0);
@@ -363,9 +467,18 @@ void EndoscopeView::render(const CameraPose& pose, const LensState& lens, int wi
     gl.Uniform2f(lensPass.uniform("uTexel"), 1.0F / static_cast<float>(width),
                  1.0F / static_cast<float>(height));
     gl.Uniform1f(lensPass.uniform("uAspect"), static_cast<float>(aspect));
-    gl.Uniform1f(lensPass.uniform("uSoiling"), static_cast<float>(std::clamp(lens.soiling, 0.0, 1.0)));
     gl.Uniform1f(lensPass.uniform("uRedOut"), static_cast<float>(m_redOut));
-    gl.Uniform1f(lensPass.uniform("uSeed"), static_cast<float>(lens.soilingSeed));
+    if (!clean) {
+        gl.ActiveTexture(GL_TEXTURE1);
+        gl.BindTexture(GL_TEXTURE_2D, m_maskTexture);
+        gl.Uniform1i(lensPass.uniform("uMask"), 1);
+        gl.ActiveTexture(GL_TEXTURE2);
+        gl.BindTexture(GL_TEXTURE_2D, m_blurTexture);
+        gl.Uniform1i(lensPass.uniform("uBlur"), 2);
+        gl.Uniform1f(lensPass.uniform("uSoiled"), soiled ? 1.0F : 0.0F);
+        gl.Uniform1f(lensPass.uniform("uBlurRadius"), static_cast<float>(blurRadius));
+        gl.ActiveTexture(GL_TEXTURE0);
+    }
     gl.BindVertexArray(m_screenVao);
     gl.DrawArrays(GL_TRIANGLES, 0, 3);
     gl.BindVertexArray(0);

@@ -16,7 +16,10 @@
 /// Pass 2, to the host's framebuffer: lens soiling (a screen-space mask of
 ///   droplets whose extent grows with the soiling amount; under it the image
 ///   is blurred and veiled), red-out, and the black surround of the image
-///   circle.
+///   circle. The droplet mask is drawn into a texture only when the soiling
+///   crosses a step of 1/64, its seed or the size changes; the blur (a disc
+///   of 9/480 of the image height, the same share at any scale) reads the
+///   scene reduced by a power of two near 0.45 of its radius.
 /// Culling: the triangles are drawn in chunks (TubeLevelsOfDetail.h; 16
 /// rings of a tube grid, else 2048 consecutive triangles); a chunk is
 /// skipped when its bounding sphere lies wholly beyond the far distance or
@@ -121,13 +124,22 @@ public:
 
 private:
     void resizeTarget(int width, int height);
+    /// Draws the soiling's droplet mask (Shaders.h, kLensMaskFragment) when
+    /// the soiling, its seed or the size changed.
+    void updateLensMask(const LensState& lens, int width, int height);
+    /// Draws the scene reduced for the soiling's blur (Shaders.h,
+    /// kLensReduceFragment) of `blurRadius` pixels.
+    void reduceForBlur(double blurRadius, int width, int height);
     void bakeMucosa();
 
     const GlFunctions& m_gl;
     RenderParameters m_parameters;
     std::unique_ptr<ShaderProgram> m_wall;
     std::unique_ptr<ShaderProgram> m_lens;
-    std::unique_ptr<ShaderProgram> m_cleanLens;  ///< the lens pass without soiling and red-out
+    std::unique_ptr<ShaderProgram> m_cleanLens;
+    std::unique_ptr<ShaderProgram> m_lensMask;    ///< draws the soiling's droplet mask
+    std::unique_ptr<ShaderProgram> m_lensReduce;  ///< reduces the scene for the soiling's blur  ///< the lens
+                                                  ///< pass without soiling and red-out
     GLuint m_vao = 0;
     GLuint m_screenVao = 0;
     GLuint m_dynamicBuffer = 0;
@@ -140,6 +152,19 @@ private:
     GLuint m_targetDepth = 0;
     int m_targetWidth = 0;
     int m_targetHeight = 0;
+    GLuint m_maskFramebuffer = 0;
+    GLuint m_maskTexture = 0;  ///< R8, the soiling's droplet mask at the target's size
+    int m_maskWidth = 0;
+    int m_maskHeight = 0;
+    double m_maskSoiling = -1.0;  ///< the soiling it was drawn for (in steps of 1/64)
+    double m_maskSeed = 0.0;
+    GLuint m_blurFramebuffer = 0;
+    GLuint m_blurTexture = 0;  ///< the scene reduced for the soiling's blur
+    int m_blurWidth = 0;
+    int m_blurHeight = 0;
+    /// The soiling's blur radius as a fraction of the image height (9 pixels
+    /// of 480).
+    static constexpr double kSoilingBlurRadius = 9.0 / 480.0;
     TubeLevelsOfDetail m_levels;         ///< the chunks and their levels of detail
     std::vector<double> m_chunkNearest;  ///< per chunk, per frame (TubeLevelsOfDetail::drawList)
     std::vector<std::array<int, 3>> m_triangles;

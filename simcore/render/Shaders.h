@@ -333,56 +333,92 @@ void main()
 }
 )";
 
+/// The soiling's droplet mask (0 clear .. 1 under a drop or smear), drawn
+/// into a one-channel texture of the view's size whenever the soiling amount
+/// (in steps of 1/64) or its seed changes, not every frame: droplets and
+/// smears on the lens, on a jittered grid at two scales, a cell holding a
+/// round drop when its random number is below the soiling amount; drops grow
+/// with it. A thin film veils the rest in proportion.
+inline constexpr const char* kLensMaskFragment = R"(
+in vec2 vUv;
+out vec4 fragColour;
+uniform float uAspect;
+uniform float uSoiling;   // 0 clean .. 1 fully soiled
+uniform float uSeed;
+void main()
+{
+    vec2 p = vec2((vUv.x * 2.0 - 1.0) * uAspect, vUv.y * 2.0 - 1.0);
+    float mask = 0.0;
+    for (int level = 0; level < 2; ++level) {
+        float scale = level == 0 ? 4.0 : 9.0;
+        vec2 q = p * scale;
+        vec2 cell = floor(q);
+        for (int i = -1; i <= 1; ++i) {
+            for (int j = -1; j <= 1; ++j) {
+                vec2 c = cell + vec2(float(i), float(j));
+                float seed = uSeed + float(level) * 7.0;
+                if (hash(vec3(c, seed)) < uSoiling) {
+                    vec2 centre = c + vec2(hash(vec3(c, seed + 1.0)), hash(vec3(c, seed + 2.0)));
+                    float radius = (0.3 + 0.5 * hash(vec3(c, seed + 3.0))) * (0.5 + 0.7 * uSoiling);
+                    float d = length(q - centre);
+                    mask = max(mask, 1.0 - smoothstep(0.75 * radius, radius, d));
+                }
+            }
+        }
+    }
+    fragColour = vec4(max(mask, 0.35 * uSoiling), 0.0, 0.0, 1.0);
+}
+)";
+
+/// The scene reduced by a factor f each way for the soiling's blur: each
+/// texel the mean of an f x f block, from four bilinear taps f / 4 pixels
+/// from its centre (uOffset, in texture coordinates).
+inline constexpr const char* kLensReduceFragment = R"(
+in vec2 vUv;
+out vec4 fragColour;
+uniform sampler2D uScene;
+uniform vec2 uOffset;
+void main()
+{
+    vec3 sum = texture(uScene, vUv + vec2(uOffset.x, uOffset.y)).rgb;
+    sum += texture(uScene, vUv + vec2(-uOffset.x, uOffset.y)).rgb;
+    sum += texture(uScene, vUv + vec2(uOffset.x, -uOffset.y)).rgb;
+    sum += texture(uScene, vUv + vec2(-uOffset.x, -uOffset.y)).rgb;
+    fragColour = vec4(0.25 * sum, 1.0);
+}
+)";
+
 inline constexpr const char* kLensFragment = R"(
 in vec2 vUv;
 out vec4 fragColour;
 uniform sampler2D uScene;
 uniform vec2 uTexel;
 uniform float uAspect;
-uniform float uSoiling;   // 0 clean .. 1 fully soiled
 uniform float uRedOut;    // 0 .. 1
-uniform float uSeed;
+#ifndef LENS_CLEAN
+uniform sampler2D uMask;  // kLensMaskFragment's
+uniform sampler2D uBlur;  // the scene reduced (kLensReduceFragment)
+uniform float uSoiled;    // 1 with a mask to apply
+uniform float uBlurRadius;  // pixels
+#endif
 void main()
 {
     vec2 p = vec2((vUv.x * 2.0 - 1.0) * uAspect, vUv.y * 2.0 - 1.0);
     float radius = length(p);
     vec3 colour = texture(uScene, vUv).rgb;
 #ifndef LENS_CLEAN
-    // Soiling: droplets and smears on the lens, which blur and veil the view.
-    // Droplets: on a jittered grid at two scales, a cell holds a round drop
-    // when its random number is below the soiling amount; drops grow with
-    // it. A thin film veils the rest in proportion.
-    float mask = 0.0;
-    if (uSoiling > 0.0) {
-        for (int level = 0; level < 2; ++level) {
-            float scale = level == 0 ? 4.0 : 9.0;
-            vec2 q = p * scale;
-            vec2 cell = floor(q);
-            for (int i = -1; i <= 1; ++i) {
-                for (int j = -1; j <= 1; ++j) {
-                    vec2 c = cell + vec2(float(i), float(j));
-                    float seed = uSeed + float(level) * 7.0;
-                    if (hash(vec3(c, seed)) < uSoiling) {
-                        vec2 centre = c + vec2(hash(vec3(c, seed + 1.0)), hash(vec3(c, seed + 2.0)));
-                        float radius = (0.3 + 0.5 * hash(vec3(c, seed + 3.0))) * (0.5 + 0.7 * uSoiling);
-                        float d = length(q - centre);
-                        mask = max(mask, 1.0 - smoothstep(0.75 * radius, radius, d));
-                    }
-                }
-            }
-        }
-        mask = max(mask, 0.35 * uSoiling);
-    }
+    // Soiling blurs and veils the view under its mask. The blur is a disc of
+    // uBlurRadius pixels: five bilinear taps of the reduced scene, the centre
+    // and four at half the radius diagonally.
+    float mask = uSoiled > 0.0 ? texture(uMask, vUv).r : 0.0;
     if (mask > 0.0) {
-        // A 24-tap disc (three rings, rotated against each other) of radius 9 pixels.
-        vec3 blurred = texture(uScene, vUv).rgb;
-        for (int ring = 1; ring <= 3; ++ring) {
-            for (int k = 0; k < 8; ++k) {
-                float a = 0.785398 * (float(k) + 0.5 * float(ring));
-                blurred += texture(uScene, vUv + vec2(cos(a), sin(a)) * uTexel * 3.0 * float(ring)).rgb;
-            }
-        }
-        blurred /= 25.0;
+        vec2 step = 0.5 * uBlurRadius * uTexel;
+        vec3 blurred = texture(uBlur, vUv).rgb;
+        blurred += texture(uBlur, vUv + vec2(step.x, step.y)).rgb;
+        blurred += texture(uBlur, vUv + vec2(-step.x, step.y)).rgb;
+        blurred += texture(uBlur, vUv + vec2(step.x, -step.y)).rgb;
+        blurred += texture(uBlur, vUv + vec2(-step.x, -step.y)).rgb;
+        blurred /= 5.0;
         vec3 veil = mix(blurred, vec3(0.62, 0.55, 0.38) * 1.6 * dot(blurred, vec3(0.33)), 0.3);
         colour = mix(colour, veil, 0.9 * mask);
     }

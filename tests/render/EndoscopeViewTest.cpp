@@ -292,4 +292,82 @@ TEST(EndoscopeView, LensWashedFrameIsClearerThanSoiledOne)
     EXPECT_GT(gradientEnergy(washed.image), 1.5 * gradientEnergy(soiled.image));
 }
 
+/// A view of the tube that draws `lenses` one after another, each image
+/// read back; size k of `sizes` for lens k.
+std::vector<render::RgbaImage> renderLenses(const render::CameraPose& pose,
+                                            const std::vector<render::LensState>& lenses,
+                                            const std::vector<std::pair<int, int>>& sizes)
+{
+    render::OffscreenContext context(kWidth, kHeight);
+    const auto tube = colonosim::testing::straightTube(kRadius, kLength, 0.002, 64);
+    const auto centreline = colonosim::testing::straightCentreline(kRadius, kLength, 0.001);
+    const render::WallSurface surface = render::buildWallSurface(tube, centreline, {});
+    render::EndoscopeView view(context.gl(), surface, render::RenderParameters{});
+    std::vector<render::RgbaImage> images;
+    for (size_t k = 0; k < lenses.size(); ++k) {
+        view.render(pose, lenses[k], sizes[k].first, sizes[k].second);
+        render::RgbaImage image = context.readBack();
+        // The context's buffer stays kWidth x kHeight: keep the drawn corner.
+        render::RgbaImage drawn;
+        drawn.width = sizes[k].first;
+        drawn.height = sizes[k].second;
+        for (int y = kHeight - drawn.height; y < kHeight; ++y) {
+            const auto* row = image.at(0, y);
+            drawn.pixels.insert(drawn.pixels.end(), row, row + 4 * drawn.width);
+        }
+        images.push_back(std::move(drawn));
+    }
+    return images;
+}
+
+TEST(EndoscopeView, ASoiledLensIsDrawnAsIfSetAfreshWhateverCameBefore)
+{
+    // The droplet mask and the reduced scene are kept between frames: every
+    // change of the soiling, its seed or the size must show at once.
+    const render::CameraPose pose = axialPose(0.02);
+    constexpr double kInf = std::numeric_limits<double>::infinity();
+    const std::vector<render::LensState> lenses = {{0.3, 0.0, kInf}, {0.8, 0.0, kInf}, {0.8, 5.0, kInf},
+                                                   {0.0, 5.0, kInf}, {0.3, 0.0, kInf}, {0.3, 0.0, kInf}};
+    const std::vector<std::pair<int, int>> sizes = {{kWidth, kHeight}, {kWidth, kHeight}, {kWidth, kHeight},
+                                                    {kWidth, kHeight}, {kWidth, kHeight}, {160, 120}};
+    const std::vector<render::RgbaImage> stepped = renderLenses(pose, lenses, sizes);
+    for (size_t k = 0; k < lenses.size(); ++k) {
+        const render::RgbaImage fresh = renderLenses(pose, {lenses[k]}, {sizes[k]}).front();
+        EXPECT_EQ(stepped[k].pixels, fresh.pixels) << "step " << k;
+    }
+    EXPECT_NE(stepped[0].pixels, stepped[1].pixels) << "more soiling shows";
+    EXPECT_NE(stepped[1].pixels, stepped[2].pixels) << "a new droplet pattern shows";
+    EXPECT_NE(stepped[2].pixels, stepped[3].pixels) << "the wash shows";
+}
+
+TEST(EndoscopeView, TheSoilingBlursTheSameShareOfTheImageAtAnyScale)
+{
+    // The blur belongs to the lens, not to the pixels: the view drawn at half
+    // the size (the trainer's smallest scale) and the full-size view reduced
+    // to it differ under soiling no more than they do clean. (A blur of so
+    // many pixels, twice as wide on the half-size view, made the soiled pair
+    // differ by 0.0039 against 0.0025 clean.)
+    const render::CameraPose pose = axialPose(0.02);
+    constexpr double kInf = std::numeric_limits<double>::infinity();
+    const auto difference = [&](double soiling) {
+        const render::LensState lens{soiling, 0.0, kInf};
+        const render::RgbaImage full = renderLenses(pose, {lens}, {{kWidth, kHeight}}).front();
+        const render::RgbaImage half = renderLenses(pose, {lens}, {{kWidth / 2, kHeight / 2}}).front();
+        double sum = 0.0;
+        for (int y = 0; y < kHeight / 2; ++y) {
+            for (int x = 0; x < kWidth / 2; ++x) {
+                const double reduced =
+                    (luminance(full, 2 * x, 2 * y) + luminance(full, 2 * x + 1, 2 * y) +
+                     luminance(full, 2 * x, 2 * y + 1) + luminance(full, 2 * x + 1, 2 * y + 1)) /
+                    4.0;
+                sum += std::abs(reduced - luminance(half, x, y));
+            }
+        }
+        return sum / (kWidth / 2 * kHeight / 2);
+    };
+    const double clean = difference(0.0);
+    const double soiled = difference(0.8);
+    EXPECT_LT(soiled, clean + 5e-4) << "clean " << clean;
+}
+
 }  // namespace
