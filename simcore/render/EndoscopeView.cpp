@@ -281,27 +281,14 @@ void EndoscopeView::updateLensMask(const LensState& lens, int width, int height)
     // The mask follows the soiling in steps of 1/64 (a drop's radius moves
     // by about 1% a step): it is drawn again only when one is crossed.
     const double amount = std::max(std::round(std::clamp(lens.soiling, 0.0, 1.0) * 64.0), 1.0) / 64.0;
-    if (m_maskTexture != 0 && width == m_maskWidth && height == m_maskHeight && amount == m_maskSoiling &&
+    if (width == m_maskWidth && height == m_maskHeight && amount == m_maskSoiling &&
         lens.soilingSeed == m_maskSeed) {
         return;
     }
     const GlFunctions& gl = m_gl;
-    if (m_maskTexture == 0) {
-        gl.GenTextures(1, &m_maskTexture);
-        gl.GenFramebuffers(1, &m_maskFramebuffer);
-    }
-    gl.BindTexture(GL_TEXTURE_2D, m_maskTexture);
     if (width != m_maskWidth || height != m_maskHeight) {
-        gl.TexImage2D(GL_TEXTURE_2D, 0, GL_R8, width, height, 0, GL_RED, GL_UNSIGNED_BYTE, nullptr);
-        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-        gl.BindFramebuffer(GL_FRAMEBUFFER, m_maskFramebuffer);
-        gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, m_maskTexture, 0);
-        if (gl.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-            throw RenderError("the lens soiling's mask cannot be rendered to");
-        }
+        allocateColourTarget(gl, m_maskFramebuffer, m_maskTexture, width, height, GL_R8, GL_NEAREST,
+                             "the lens soiling's mask cannot be rendered to");
         m_maskWidth = width;
         m_maskHeight = height;
     }
@@ -328,22 +315,9 @@ void EndoscopeView::reduceForBlur(double blurRadius, int width, int height)
     const int w = std::max(width / factor, 1);
     const int h = std::max(height / factor, 1);
     const GlFunctions& gl = m_gl;
-    if (m_blurTexture == 0) {
-        gl.GenTextures(1, &m_blurTexture);
-        gl.GenFramebuffers(1, &m_blurFramebuffer);
-    }
     if (w != m_blurWidth || h != m_blurHeight) {
-        gl.BindTexture(GL_TEXTURE_2D, m_blurTexture);
-        gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-        gl.BindFramebuffer(GL_FRAMEBUFFER, m_blurFramebuffer);
-        gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, m_blurTexture, 0);
-        if (gl.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-            throw RenderError("the lens soiling's blur cannot be rendered to");
-        }
+        allocateColourTarget(gl, m_blurFramebuffer, m_blurTexture, w, h, GL_RGBA8, GL_LINEAR,
+                             "the lens soiling's blur cannot be rendered to");
         m_blurWidth = w;
         m_blurHeight = h;
     }

@@ -21,28 +21,60 @@ GlFunctions::GlFunctions(const GetProcAddress& getProcAddress)
     }
 }
 
+namespace {
+
+/// Generates `colour` on the first call and gives it width x height texels of
+/// `internalFormat`, filtered by `filter`, clamped at the edges.
+void allocateColourTexture(const GlFunctions& gl, GLuint& colour, int width, int height, GLint internalFormat,
+                           GLint filter)
+{
+    if (colour == 0) {
+        gl.GenTextures(1, &colour);
+    }
+    const GLenum format = internalFormat == GL_R8 ? GL_RED : GL_RGBA;
+    gl.BindTexture(GL_TEXTURE_2D, colour);
+    gl.TexImage2D(GL_TEXTURE_2D, 0, internalFormat, width, height, 0, format, GL_UNSIGNED_BYTE, nullptr);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+
+void checkComplete(const GlFunctions& gl, const char* what)
+{
+    if (gl.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+        throw RenderError(what);
+    }
+}
+
+}  // namespace
+
 void allocateColourDepthTarget(const GlFunctions& gl, GLuint& framebuffer, GLuint& colour, GLuint& depth,
                                int width, int height, GLint filter, const char* what)
 {
     if (framebuffer == 0) {
         gl.GenFramebuffers(1, &framebuffer);
-        gl.GenTextures(1, &colour);
         gl.GenRenderbuffers(1, &depth);
     }
-    gl.BindTexture(GL_TEXTURE_2D, colour);
-    gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
-    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
-    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    allocateColourTexture(gl, colour, width, height, GL_RGBA8, filter);
     gl.BindRenderbuffer(GL_RENDERBUFFER, depth);
     gl.RenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
     gl.BindFramebuffer(GL_FRAMEBUFFER, framebuffer);
     gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour, 0);
     gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
-    if (gl.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-        throw RenderError(what);
+    checkComplete(gl, what);
+}
+
+void allocateColourTarget(const GlFunctions& gl, GLuint& framebuffer, GLuint& colour, int width, int height,
+                          GLint internalFormat, GLint filter, const char* what)
+{
+    if (framebuffer == 0) {
+        gl.GenFramebuffers(1, &framebuffer);
     }
+    allocateColourTexture(gl, colour, width, height, internalFormat, filter);
+    gl.BindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour, 0);
+    checkComplete(gl, what);
 }
 
 }  // namespace colonosim::render

@@ -109,4 +109,9 @@ struct GlFunctions {
 void allocateColourDepthTarget(const GlFunctions& gl, GLuint& framebuffer, GLuint& colour, GLuint& depth,
                                int width, int height, GLint filter, const char* what);
 
+/// The same without depth, the texture of `internalFormat` (GL_RGBA8,
+/// GL_R8, ...).
+void allocateColourTarget(const GlFunctions& gl, GLuint& framebuffer, GLuint& colour, int width, int height,
+                          GLint internalFormat, GLint filter, const char* what);
+
 }  // namespace colonosim::render
