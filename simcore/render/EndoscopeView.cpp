@@ -252,16 +252,29 @@ void EndoscopeView::setBleedingMarks(const std::vector<BleedingMark>& marks)
 double EndoscopeView::wallDistanceAhead(const Eigen::Vector3d& point, const Eigen::Vector3d& forward,
                                         double coneAngle) const
 {
-    const double cosCone = std::cos(coneAngle);
-    double best = std::numeric_limits<double>::infinity();
+    return wallDistancesAhead(point, forward, {coneAngle, coneAngle})[0];
+}
+
+std::array<double, 2> EndoscopeView::wallDistancesAhead(const Eigen::Vector3d& point,
+                                                        const Eigen::Vector3d& forward,
+                                                        const std::array<double, 2>& coneAngles) const
+{
+    const std::array<double, 2> cosCone{std::cos(coneAngles[0]), std::cos(coneAngles[1])};
+    std::array<double, 2> best{std::numeric_limits<double>::infinity(),
+                               std::numeric_limits<double>::infinity()};
     for (Eigen::Index i = 0; i < m_positions.cols(); ++i) {
         const Eigen::Vector3d d = m_positions.col(i) - point;
         const double along = d.dot(forward);
-        if (along > 0.0 && along >= cosCone * d.norm()) {
-            best = std::min(best, d.squaredNorm());
+        if (along > 0.0) {
+            const double norm = d.norm();
+            for (size_t k = 0; k < 2; ++k) {
+                if (along >= cosCone[k] * norm) {
+                    best[k] = std::min(best[k], d.squaredNorm());
+                }
+            }
         }
     }
-    return std::sqrt(best);
+    return {std::sqrt(best[0]), std::sqrt(best[1])};
 }
 
 void EndoscopeView::resizeTarget(int width, int height)
@@ -342,7 +355,10 @@ void EndoscopeView::render(const CameraPose& pose, const LensState& lens, int wi
     resizeTarget(width, height);
     const double aspect = static_cast<double>(width) / static_cast<double>(height);
     const Eigen::Vector3d forward = pose.rotation.col(2);
-    const double ahead = std::min(wallDistanceAhead(pose.position, forward), lens.wallDistance);
+    // The nearest wall ahead (red-out) and within the light meter's cone.
+    const std::array<double, 2> distances =
+        wallDistancesAhead(pose.position, forward, {std::numbers::pi / 2.0, m_parameters.autoLightCone});
+    const double ahead = std::min(distances[0], lens.wallDistance);
     m_redOut = std::clamp((m_parameters.redOutDistance - ahead) /
                               (m_parameters.redOutDistance - m_parameters.contactDistance),
                           0.0, 1.0);
@@ -364,7 +380,7 @@ void EndoscopeView::render(const CameraPose& pose, const LensState& lens, int wi
     // Automatic light control: a wall nearer than autoLightDistance would
     // glare (inverse square), so the source is dimmed to keep it exposed.
     double intensity = m_parameters.lightIntensity;
-    const double metered = wallDistanceAhead(pose.position, forward, m_parameters.autoLightCone);
+    const double metered = distances[1];
     if (m_parameters.autoLightDistance > 0.0 && metered < m_parameters.autoLightDistance) {
         const double ratio = metered / m_parameters.autoLightDistance;
         intensity *= std::max(ratio * ratio, 0.02);

@@ -68,6 +68,7 @@
 
 #include <Eigen/Core>
 
+#include <array>
 #include <limits>
 #include <memory>
 #include <vector>
@@ -117,6 +118,10 @@ public:
     /// (rad) of `forward` (pi/2: the half-space ahead), m (infinity when none).
     [[nodiscard]] double wallDistanceAhead(const Eigen::Vector3d& point, const Eigen::Vector3d& forward,
                                            double coneAngle = 1.5707963267948966) const;
+    /// wallDistanceAhead() within each of the cones, in one pass over the wall.
+    [[nodiscard]] std::array<double, 2> wallDistancesAhead(const Eigen::Vector3d& point,
+                                                           const Eigen::Vector3d& forward,
+                                                           const std::array<double, 2>& coneAngles) const;
     [[nodiscard]] FisheyeLens lens(int width, int height) const
     {
         return {m_parameters.fieldOfView, width, height};
