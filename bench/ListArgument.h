@@ -21,6 +21,24 @@ inline std::string shortest(double value)
     return out.str();
 }
 
+/// The number `text` in [low, high]; throws std::invalid_argument naming
+/// `flag`, the text and the range otherwise.
+inline double parseNumber(const std::string& flag, const std::string& text, double low, double high)
+{
+    std::size_t used = 0;
+    double value = 0.0;
+    try {
+        value = std::stod(text, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (used != text.size() || text.empty() || !(value >= low && value <= high)) {
+        throw std::invalid_argument(flag + ": value '" + text + "' is not a number in [" + shortest(low) +
+                                    ", " + shortest(high) + "]");
+    }
+    return value;
+}
+
 /// Values of `text` ("1,2.5,3"), each in [low, high]; throws std::invalid_argument otherwise.
 inline std::vector<double> parseList(const std::string& flag, const std::string& text, double low,
                                      double high)
@@ -29,18 +47,7 @@ inline std::vector<double> parseList(const std::string& flag, const std::string&
     std::stringstream in(text);
     std::string item;
     while (std::getline(in, item, ',')) {
-        std::size_t used = 0;
-        double value = 0.0;
-        try {
-            value = std::stod(item, &used);
-        } catch (const std::exception&) {
-            used = 0;
-        }
-        if (used != item.size() || item.empty() || !(value >= low && value <= high)) {
-            throw std::invalid_argument(flag + ": value '" + item + "' is not a number in [" + shortest(low) +
-                                        ", " + shortest(high) + "]");
-        }
-        values.push_back(value);
+        values.push_back(parseNumber(flag, item, low, high));
     }
     if (values.empty()) {
         throw std::invalid_argument(flag + ": no values given");

@@ -16,6 +16,8 @@
 //
 // About a minute of wall time for each 15 s simulated past the sigmoid.
 
+#include "ListArgument.h"
+
 #include "db/Database.h"
 #include "db/Records.h"
 #include "trainer_ui/app/AppContext.h"
@@ -51,34 +53,17 @@ struct Options {
 Options parse(int argc, char** argv)
 {
     Options options;
-    for (int i = 1; i < argc; ++i) {
-        const std::string flag = argv[i];
-        if (i + 1 >= argc) {
-            throw std::invalid_argument(flag + " needs a value");
-        }
-        const std::string text = argv[++i];
-        double value = 0.0;
-        std::size_t used = 0;
-        try {
-            value = std::stod(text, &used);
-        } catch (const std::exception&) {
-            used = 0;
-        }
-        if (used == 0 || used != text.size()) {
-            throw std::invalid_argument(flag + " = " + text + ": not a number of seconds");
-        }
-        if (flag == "--seconds" && value >= 1.0 && value <= 600.0) {
-            options.seconds = value;
-        } else if (flag == "--window" && value >= 0.5 && value <= 60.0) {
-            options.window = value;
-        } else if (flag == "--from" && value >= 0.0 && value <= 600.0) {
-            options.from = value;
+    bench::forEachOption(argc, argv, [&options](const std::string& flag, const std::string& text) {
+        if (flag == "--seconds") {
+            options.seconds = bench::parseNumber(flag, text, 1.0, 600.0);
+        } else if (flag == "--window") {
+            options.window = bench::parseNumber(flag, text, 0.5, 60.0);
+        } else if (flag == "--from") {
+            options.from = bench::parseNumber(flag, text, 0.0, 600.0);
         } else {
-            throw std::invalid_argument(flag + " = " + text +
-                                        ": expected --seconds in [1, 600], --window in [0.5, 60] or "
-                                        "--from in [0, 600]");
+            throw std::invalid_argument(flag + ": unknown option (expected --seconds, --window or --from)");
         }
-    }
+    });
     return options;
 }
 
