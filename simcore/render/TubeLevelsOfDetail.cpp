@@ -107,9 +107,8 @@ void TubeLevelsOfDetail::buildGridChunks(const Eigen::Matrix3Xd& rest)
     const int bands = m_grid->rings - 1;
     for (int first = 0; first < bands; first += kBandsPerChunk) {
         Chunk chunk;
-        chunk.firstBand = first;
-        chunk.lastBand = std::min(bands, first + kBandsPerChunk);
-        const int count = chunk.lastBand - first;
+        const int last = std::min(bands, first + kBandsPerChunk);
+        const int count = last - first;
         for (int level = 1; level <= kMaxLevel; ++level) {
             const int step = stepOf(level);
             if (count % step != 0 || p % step != 0 || p / step < kMinPerRing) {
@@ -117,7 +116,7 @@ void TubeLevelsOfDetail::buildGridChunks(const Eigen::Matrix3Xd& rest)
             }
             chunk.maxLevel = level;
         }
-        for (int ring = first; ring <= chunk.lastBand; ++ring) {
+        for (int ring = first; ring <= last; ++ring) {
             for (int j = 0; j < p; ++j) {
                 chunk.vertices.push_back(vertex(ring, j));
             }
@@ -125,14 +124,14 @@ void TubeLevelsOfDetail::buildGridChunks(const Eigen::Matrix3Xd& rest)
         chunk.ranges[0][0] = {6 * p * first, 6 * p * count};
         for (int level = 1; level <= chunk.maxLevel; ++level) {
             const int step = stepOf(level);
-            chunk.error[static_cast<size_t>(level)] = gridError(rest, first, chunk.lastBand, step);
+            chunk.error[static_cast<size_t>(level)] = gridError(rest, first, last, step);
             for (int startLevel = 0; startLevel <= level; ++startLevel) {
                 for (int endLevel = 0; endLevel <= level; ++endLevel) {
                     const auto begin = static_cast<int>(m_indices.size());
-                    for (int a = first; a < chunk.lastBand; a += step) {
+                    for (int a = first; a < last; a += step) {
                         const int b = a + step;
                         appendBand(a, a == first ? stepOf(startLevel) : step, b,
-                                   b == chunk.lastBand ? stepOf(endLevel) : step);
+                                   b == last ? stepOf(endLevel) : step);
                     }
                     chunk.ranges[static_cast<size_t>(level)][variant(startLevel, endLevel)] = {
                         begin, static_cast<int>(m_indices.size()) - begin};
@@ -148,7 +147,6 @@ void TubeLevelsOfDetail::buildGridChunks(const Eigen::Matrix3Xd& rest)
             fan.vertices.push_back(last + j);
         }
         fan.vertices.push_back(m_grid->apex);
-        fan.firstBand = fan.lastBand = bands;
         fan.ranges[0][0] = {6 * p * bands, 3 * p};
         m_chunks.push_back(std::move(fan));
     }

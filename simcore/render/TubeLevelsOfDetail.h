@@ -94,8 +94,6 @@ public:
 private:
     struct Chunk {
         std::vector<int> vertices;
-        int firstBand = 0;  ///< grid chunks: bands [firstBand, lastBand)
-        int lastBand = 0;
         int maxLevel = 0;
         std::array<double, kMaxLevel + 1> error{};
         /// Level L's ranges, (kMaxLevel + 1)^2 of them, by (startLevel, endLevel).
