@@ -145,9 +145,7 @@ void EndoscopeView::bakeMucosa()
     gl.Viewport(0, 0, kSize, kSize);
     gl.Disable(GL_DEPTH_TEST);
     bake.use();
-    gl.BindVertexArray(m_screenVao);
-    gl.DrawArrays(GL_TRIANGLES, 0, 3);
-    gl.BindVertexArray(0);
+    drawScreenTriangle();
     gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
     gl.DeleteFramebuffers(1, &framebuffer);
     gl.GenerateMipmap(GL_TEXTURE_2D);
@@ -162,10 +160,8 @@ EndoscopeView::~EndoscopeView()
     m_gl.DeleteVertexArrays(1, &m_vao);
     m_gl.DeleteVertexArrays(1, &m_screenVao);
     m_gl.DeleteTextures(1, &m_mucosa);
-    m_gl.DeleteTextures(1, &m_maskTexture);
-    m_gl.DeleteTextures(1, &m_blurTexture);
-    m_gl.DeleteFramebuffers(1, &m_blurFramebuffer);
-    m_gl.DeleteFramebuffers(1, &m_maskFramebuffer);
+    m_mask.release(m_gl);
+    m_blur.release(m_gl);
     m_gl.DeleteFramebuffers(1, &m_targetFramebuffer);
     m_gl.DeleteTextures(1, &m_targetColour);
     m_gl.DeleteRenderbuffers(1, &m_targetDepth);
@@ -289,31 +285,29 @@ void EndoscopeView::resizeTarget(int width, int height)
     m_targetHeight = height;
 }
 
+void EndoscopeView::drawScreenTriangle() const
+{
+    m_gl.BindVertexArray(m_screenVao);
+    m_gl.DrawArrays(GL_TRIANGLES, 0, 3);
+    m_gl.BindVertexArray(0);
+}
+
 void EndoscopeView::updateLensMask(const LensState& lens, int width, int height)
 {
     // The mask follows the soiling in steps of 1/64 (a drop's radius moves
     // by about 1% a step): it is drawn again only when one is crossed.
     const double amount = std::max(std::round(std::clamp(lens.soiling, 0.0, 1.0) * 64.0), 1.0) / 64.0;
-    if (width == m_maskWidth && height == m_maskHeight && amount == m_maskSoiling &&
+    if (width == m_mask.width && height == m_mask.height && amount == m_maskSoiling &&
         lens.soilingSeed == m_maskSeed) {
         return;
     }
     const GlFunctions& gl = m_gl;
-    if (width != m_maskWidth || height != m_maskHeight) {
-        allocateColourTarget(gl, m_maskFramebuffer, m_maskTexture, width, height, GL_R8, GL_NEAREST,
-                             "the lens soiling's mask cannot be rendered to");
-        m_maskWidth = width;
-        m_maskHeight = height;
-    }
-    gl.BindFramebuffer(GL_FRAMEBUFFER, m_maskFramebuffer);
-    gl.Viewport(0, 0, width, height);
+    m_mask.bind(gl, width, height, GL_R8, GL_NEAREST, "the lens soiling's mask cannot be rendered to");
     m_lensMask->use();
     gl.Uniform1f(m_lensMask->uniform("uAspect"), static_cast<float>(width) / static_cast<float>(height));
     gl.Uniform1f(m_lensMask->uniform("uSoiling"), static_cast<float>(amount));
     gl.Uniform1f(m_lensMask->uniform("uSeed"), static_cast<float>(lens.soilingSeed));
-    gl.BindVertexArray(m_screenVao);
-    gl.DrawArrays(GL_TRIANGLES, 0, 3);
-    gl.BindVertexArray(0);
+    drawScreenTriangle();
     m_maskSoiling = amount;
     m_maskSeed = lens.soilingSeed;
 }
@@ -328,14 +322,7 @@ void EndoscopeView::reduceForBlur(double blurRadius, int width, int height)
     const int w = std::max(width / factor, 1);
     const int h = std::max(height / factor, 1);
     const GlFunctions& gl = m_gl;
-    if (w != m_blurWidth || h != m_blurHeight) {
-        allocateColourTarget(gl, m_blurFramebuffer, m_blurTexture, w, h, GL_RGBA8, GL_LINEAR,
-                             "the lens soiling's blur cannot be rendered to");
-        m_blurWidth = w;
-        m_blurHeight = h;
-    }
-    gl.BindFramebuffer(GL_FRAMEBUFFER, m_blurFramebuffer);
-    gl.Viewport(0, 0, w, h);
+    m_blur.bind(gl, w, h, GL_RGBA8, GL_LINEAR, "the lens soiling's blur cannot be rendered to");
     m_lensReduce->use();
     gl.ActiveTexture(GL_TEXTURE0);
     gl.BindTexture(GL_TEXTURE_2D, m_targetColour);
@@ -343,9 +330,7 @@ void EndoscopeView::reduceForBlur(double blurRadius, int width, int height)
     gl.Uniform2f(m_lensReduce->uniform("uOffset"),
                  static_cast<float>(factor) / 4.0F / static_cast<float>(width),
                  static_cast<float>(factor) / 4.0F / static_cast<float>(height));
-    gl.BindVertexArray(m_screenVao);
-    gl.DrawArrays(GL_TRIANGLES, 0, 3);
-    gl.BindVertexArray(0);
+    drawScreenTriangle();
 }
 
 void EndoscopeView::render(const CameraPose& pose, const LensState& lens, int width, int height,
@@ -460,18 +445,16 @@ void EndoscopeView::render(const CameraPose& pose, const LensState& lens, int wi
     gl.Uniform1f(lensPass.uniform("uRedOut"), static_cast<float>(m_redOut));
     if (!clean) {
         gl.ActiveTexture(GL_TEXTURE1);
-        gl.BindTexture(GL_TEXTURE_2D, m_maskTexture);
+        gl.BindTexture(GL_TEXTURE_2D, m_mask.texture);
         gl.Uniform1i(lensPass.uniform("uMask"), 1);
         gl.ActiveTexture(GL_TEXTURE2);
-        gl.BindTexture(GL_TEXTURE_2D, m_blurTexture);
+        gl.BindTexture(GL_TEXTURE_2D, m_blur.texture);
         gl.Uniform1i(lensPass.uniform("uBlur"), 2);
         gl.Uniform1f(lensPass.uniform("uSoiled"), soiled ? 1.0F : 0.0F);
         gl.Uniform1f(lensPass.uniform("uBlurRadius"), static_cast<float>(blurRadius));
         gl.ActiveTexture(GL_TEXTURE0);
     }
-    gl.BindVertexArray(m_screenVao);
-    gl.DrawArrays(GL_TRIANGLES, 0, 3);
-    gl.BindVertexArray(0);
+    drawScreenTriangle();
 }
 
 }  // namespace colonosim::render

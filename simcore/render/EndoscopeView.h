@@ -136,15 +136,17 @@ private:
     /// kLensReduceFragment) of `blurRadius` pixels.
     void reduceForBlur(double blurRadius, int width, int height);
     void bakeMucosa();
+    /// Draws the screen-filling triangle (Shaders.h, kScreenVertex) with the
+    /// program in use.
+    void drawScreenTriangle() const;
 
     const GlFunctions& m_gl;
     RenderParameters m_parameters;
     std::unique_ptr<ShaderProgram> m_wall;
     std::unique_ptr<ShaderProgram> m_lens;
-    std::unique_ptr<ShaderProgram> m_cleanLens;
+    std::unique_ptr<ShaderProgram> m_cleanLens;   ///< the lens pass without soiling and red-out
     std::unique_ptr<ShaderProgram> m_lensMask;    ///< draws the soiling's droplet mask
-    std::unique_ptr<ShaderProgram> m_lensReduce;  ///< reduces the scene for the soiling's blur  ///< the lens
-                                                  ///< pass without soiling and red-out
+    std::unique_ptr<ShaderProgram> m_lensReduce;  ///< reduces the scene for the soiling's blur
     GLuint m_vao = 0;
     GLuint m_screenVao = 0;
     GLuint m_dynamicBuffer = 0;
@@ -157,16 +159,10 @@ private:
     GLuint m_targetDepth = 0;
     int m_targetWidth = 0;
     int m_targetHeight = 0;
-    GLuint m_maskFramebuffer = 0;
-    GLuint m_maskTexture = 0;  ///< R8, the soiling's droplet mask at the target's size
-    int m_maskWidth = 0;
-    int m_maskHeight = 0;
+    ColourTarget m_mask;          ///< R8, the soiling's droplet mask at the target's size
     double m_maskSoiling = -1.0;  ///< the soiling it was drawn for (in steps of 1/64)
     double m_maskSeed = 0.0;
-    GLuint m_blurFramebuffer = 0;
-    GLuint m_blurTexture = 0;  ///< the scene reduced for the soiling's blur
-    int m_blurWidth = 0;
-    int m_blurHeight = 0;
+    ColourTarget m_blur;  ///< the scene reduced for the soiling's blur
     /// The soiling's blur radius as a fraction of the image height (9 pixels
     /// of 480).
     static constexpr double kSoilingBlurRadius = 9.0 / 480.0;

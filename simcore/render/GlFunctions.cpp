@@ -77,4 +77,22 @@ void allocateColourTarget(const GlFunctions& gl, GLuint& framebuffer, GLuint& co
     checkComplete(gl, what);
 }
 
+void ColourTarget::bind(const GlFunctions& gl, int w, int h, GLint internalFormat, GLint filter,
+                        const char* what)
+{
+    if (w != width || h != height) {
+        allocateColourTarget(gl, framebuffer, texture, w, h, internalFormat, filter, what);
+        width = w;
+        height = h;
+    }
+    gl.BindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    gl.Viewport(0, 0, w, h);
+}
+
+void ColourTarget::release(const GlFunctions& gl)
+{
+    gl.DeleteTextures(1, &texture);
+    gl.DeleteFramebuffers(1, &framebuffer);
+}
+
 }  // namespace colonosim::render

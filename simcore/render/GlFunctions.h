@@ -114,4 +114,18 @@ void allocateColourDepthTarget(const GlFunctions& gl, GLuint& framebuffer, GLuin
 void allocateColourTarget(const GlFunctions& gl, GLuint& framebuffer, GLuint& colour, int width, int height,
                           GLint internalFormat, GLint filter, const char* what);
 
+/// A colour-only render target whose storage follows the size it is bound at.
+struct ColourTarget {
+    GLuint framebuffer = 0;
+    GLuint texture = 0;
+    int width = 0;   ///< pixels, 0 before the first bind
+    int height = 0;  ///< pixels
+
+    /// Reallocates the storage (allocateColourTarget) when width x height
+    /// differs from the last, then binds the framebuffer and sets the viewport.
+    void bind(const GlFunctions& gl, int w, int h, GLint internalFormat, GLint filter, const char* what);
+    /// Deletes the objects (with the context current).
+    void release(const GlFunctions& gl);
+};
+
 }  // namespace colonosim::render
