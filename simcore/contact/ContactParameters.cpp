@@ -6,7 +6,7 @@ namespace colonosim::contact {
 
 namespace {
 using P = ContactParameters;
-constexpr std::array<Field<P>, 15> kContactFields{{
+constexpr std::array<Field<P>, 16> kContactFields{{
     {&P::stiffnessSpec, &P::contactStiffness},
     {&P::dampingSpec, &P::contactDamping},
     {&P::frictionSpec, &P::frictionCoefficient},
@@ -14,6 +14,7 @@ constexpr std::array<Field<P>, 15> kContactFields{{
     {&P::passesSpec, &P::couplingPasses},
     {&P::sweepsSpec, &P::couplingSweeps},
     {&P::sweepToleranceSpec, &P::sweepTolerance},
+    {&P::passToleranceSpec, &P::passSweepTolerance},
     {&P::prefixSweepsSpec, &P::prefixSweeps},
     {&P::elementPointsSpec, &P::elementPoints},
     {&P::sideNormalsSpec, &P::sideNormals},

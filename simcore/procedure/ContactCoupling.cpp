@@ -183,7 +183,7 @@ void ContactCoupling::addWallCompliance(const std::vector<contact::LumenNodeCont
     }
 }
 
-void ContactCoupling::solve(const std::vector<contact::LumenNodeContact>& contacts)
+void ContactCoupling::solve(const std::vector<contact::LumenNodeContact>& contacts, double tolerance)
 {
     // The start state (loads carried onto the present normals) is update()'s.
     const auto m = m_active.size();
@@ -272,7 +272,7 @@ void ContactCoupling::solve(const std::vector<contact::LumenNodeContact>& contac
             m_force[a] = lambda * d;
         }
         m_residual = largest;
-        if (largest < m_limits.tolerance) {
+        if (largest < tolerance) {
             break;
         }
     }
@@ -411,10 +411,10 @@ void ContactCoupling::measureSlipCompliance()
     }
 }
 
-void ContactCoupling::solveAndApply(scope::DiscreteRod& rod, const contact::LumenContact& law)
+void ContactCoupling::solveAndApply(scope::DiscreteRod& rod, const contact::LumenContact& law, bool lastSolve)
 {
     const std::vector<contact::LumenNodeContact>& contacts = *m_contacts;
-    solve(contacts);
+    solve(contacts, lastSolve ? m_limits.tolerance : m_limits.passTolerance);
     relax();
     measureSlipCompliance();
     for (Eigen::Vector3d& load : m_load) {

@@ -93,8 +93,8 @@
 
 namespace colonosim::procedure {
 
-/// When a contact solve's Gauss-Seidel sweeps stop (contact.couplingSweeps
-/// and contact.sweepTolerance), and how they sum the load changes' effect
+/// When a contact solve's Gauss-Seidel sweeps stop (contact.couplingSweeps,
+/// contact.sweepTolerance and contact.passSweepTolerance), and how they sum the load changes' effect
 /// (contact.prefixSweeps).
 struct SweepLimits {
     int maxSweeps = 30;
@@ -110,6 +110,11 @@ struct SweepLimits {
     /// side's sums to the base side's as it updates it. Same sweeps, other
     /// rounding.
     bool prefixSums = false;
+    /// N: the largest change of a normal load in a sweep that stops the
+    /// sweeps of a solve that another solve of the step follows
+    /// (solveAndApply()'s `lastSolve` false): its loads are re-measured and
+    /// solved again, so their last bits are not kept.
+    double passTolerance = 1e-4;
 };
 
 class ContactCoupling {
@@ -181,7 +186,9 @@ public:
     /// the friction's moments slide the surface by turning the joints:
     /// (sqrt(R) + sqrt(r^2 sum_b T_ab))^2, T_ab the sum of the most
     /// compliant axis of each joint before both points.
-    void solveAndApply(scope::DiscreteRod& rod, const contact::LumenContact& law);
+    /// `lastSolve`: false when the step solves the contact again after this
+    /// one (the sweeps stop at SweepLimits::passTolerance, not tolerance).
+    void solveAndApply(scope::DiscreteRod& rod, const contact::LumenContact& law, bool lastSolve = true);
 
     /// Contact load (normal and friction) at each contact point (base to tip;
     /// the nodes themselves by default), N; the wall carries the opposite,
@@ -209,7 +216,8 @@ private:
     void buildCompliance(const scope::DiscreteRod& rod);
     void addWallCompliance(const std::vector<contact::LumenNodeContact>& contacts,
                            const Eigen::VectorXd& wallCompliance);
-    void solve(const std::vector<contact::LumenNodeContact>& contacts);
+    /// Sweeps until no normal load changes by more than `tolerance` (N) in a sweep, or the cap.
+    void solve(const std::vector<contact::LumenNodeContact>& contacts, double tolerance);
     void measureAxes(const scope::DiscreteRod& rod);
     /// The direction of the load at active point a for the wall's normal `n`.
     [[nodiscard]] Eigen::Vector3d loadDirection(size_t a, const Eigen::Vector3d& n) const;

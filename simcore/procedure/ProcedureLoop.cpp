@@ -53,7 +53,8 @@ ProcedureLoop::ProcedureLoop(const geometry::ColonAnatomy& anatomy, const Proced
       m_coupling(settings.contact.contactStiffness, settings.contact.stepLimit, settings.stepping.loopStep,
                  settings.contact.loadRelaxation,
                  {static_cast<int>(std::lround(settings.contact.couplingSweeps)),
-                  settings.contact.sweepTolerance, std::lround(settings.contact.prefixSweeps) != 0},
+                  settings.contact.sweepTolerance, std::lround(settings.contact.prefixSweeps) != 0,
+                  std::max(settings.contact.sweepTolerance, settings.contact.passSweepTolerance)},
                  ContactPoints{1 + static_cast<int>(std::lround(settings.contact.elementPoints))},
                  std::lround(settings.contact.sideNormals) != 0,
                  std::lround(settings.contact.stickingFriction) != 0,
@@ -124,12 +125,15 @@ void ProcedureLoop::applyContact()
     m_wallAhead = m_colon.body.positions() + m_settings.stepping.loopStep * m_colon.body.velocities();
     // The contact points' velocities hold for every pass of the step.
     m_coupling.points().interpolate(m_scopeVelocity, m_pointVelocity);
-    solveContact(m_scopeNow, static_cast<int>(shift), true);
     // The coupling's model is linear about the step's start shape; where the
     // chain's nonlinear solve ends elsewhere (a shaft near its buckling load
     // swings further than the model says), the contact is re-measured on the
-    // shape the chain found and solved again, until the loads settle.
+    // shape the chain found and solved again, until the loads settle. With a
+    // looser tolerance for the solves another follows, every pass is run, so
+    // that the step's loads come from a solve to the full tolerance.
     const int passes = static_cast<int>(std::lround(m_settings.contact.couplingPasses));
+    const bool loosePasses = m_settings.contact.passSweepTolerance > m_settings.contact.sweepTolerance;
+    solveContact(m_scopeNow, static_cast<int>(shift), true, passes == 1);
     m_passes = 1;
     while (m_passes < passes) {
         ++m_passes;
@@ -139,8 +143,8 @@ void ProcedureLoop::applyContact()
         for (Eigen::Index i = 0; i < n; ++i) {
             m_scopePass.col(i) = solved[static_cast<size_t>(i)];
         }
-        solveContact(m_scopePass, 0, false);
-        if (m_passLoads.cols() == m_coupling.loads().cols() &&
+        solveContact(m_scopePass, 0, false, m_passes == passes);
+        if (!loosePasses && m_passLoads.cols() == m_coupling.loads().cols() &&
             (m_passLoads - m_coupling.loads()).cwiseAbs().maxCoeff() < kPassTolerance) {
             break;
         }
@@ -190,7 +194,8 @@ void ProcedureLoop::measureSpin(int shift)
     m_coupling.points().interpolate(m_nodeSpin, m_pointSpin);
 }
 
-void ProcedureLoop::solveContact(const Eigen::Matrix3Xd& scope, int addedAtBase, bool wallMoved)
+void ProcedureLoop::solveContact(const Eigen::Matrix3Xd& scope, int addedAtBase, bool wallMoved,
+                                 bool lastSolve)
 {
     const ContactPoints& points = m_coupling.points();
     points.interpolate(scope, m_points);
@@ -204,7 +209,7 @@ void ProcedureLoop::solveContact(const Eigen::Matrix3Xd& scope, int addedAtBase,
     m_scope.addGravity(m_settings.environment.gravity *
                        physics::downDirection(m_settings.environment.patientPosition));
     m_coupling.update(contacts, m_scope.rod(), addedAtBase, m_wallCompliance, wallMoved);
-    m_coupling.solveAndApply(m_scope.rod(), m_contact);
+    m_coupling.solveAndApply(m_scope.rod(), m_contact, lastSolve);
     m_scope.step();
 }
 

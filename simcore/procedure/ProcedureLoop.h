@@ -135,7 +135,10 @@ public:
     /// Contact solves of the last step (1 to contact.couplingPasses).
     [[nodiscard]] int couplingPasses() const { return m_passes; }
     /// N: a further coupling pass is skipped once no load component changed
-    /// by more than this in the last one.
+    /// by more than this in the last one (only while every pass sweeps to
+    /// contact.sweepTolerance: with a looser contact.passSweepTolerance every
+    /// step runs all its passes, so that the last is solved to the full
+    /// tolerance).
     static constexpr double kPassTolerance = 1e-3;
     /// The contact bleeding marks so far, placed on the wall's chart for the
     /// endoscope view; bleeding() has the model's marks (rest points, forces).
@@ -148,7 +151,8 @@ private:
     /// against m_wallAhead, the coupling's loads for them, and the chain
     /// solved under those loads. `wallMoved` false: the lumen's rings are the
     /// last solve's.
-    void solveContact(const Eigen::Matrix3Xd& scope, int addedAtBase, bool wallMoved);
+    /// `lastSolve`: no further solve follows this one in the step.
+    void solveContact(const Eigen::Matrix3Xd& scope, int addedAtBase, bool wallMoved, bool lastSolve);
     /// contact.spinFriction: each node's spin over the last step, and the
     /// contact points' (`shift` nodes entered at the base since).
     void measureSpin(int shift);

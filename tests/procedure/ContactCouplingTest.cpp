@@ -533,6 +533,23 @@ TEST(ContactCoupling, StickingFrictionHoldsWithoutSlipAndLetsGoOffTheWall)
     EXPECT_EQ(tip.friction().norm(), 0.0) << "pressed again without slip";
 }
 
+namespace {
+
+/// Five contacts on every second node of a straight shaft, deeper towards the
+/// tip (15, 10, 6, 3 and 1 mm): each node's load moves the others.
+std::vector<LumenNodeContact> fiveCoupledContacts(const Colonoscope& scope)
+{
+    const int tip = scope.numInsertedNodes() - 1;
+    std::map<int, double> depths;
+    const std::array<double, 5> depth{15e-3, 10e-3, 6e-3, 3e-3, 1e-3};  // m, tip first
+    for (int k = 0; k < 5; ++k) {
+        depths[tip - 2 * k] = depth[static_cast<size_t>(k)];
+    }
+    return contactsOn(scope, depths);
+}
+
+}  // namespace
+
 // The sweeps stop at contact.couplingSweeps, or earlier once no load changes
 // by more than contact.sweepTolerance in a sweep; residual() is that largest
 // change of the last sweep. Five contacts along one shaft, deeper towards the
@@ -543,13 +560,7 @@ TEST(ContactCoupling, TheSweepsStopAtTheirCapOrOnceTheLoadsSettle)
 {
     const auto solved = [](colonosim::procedure::SweepLimits limits) {
         Colonoscope scope = straightScope(0.3);
-        const int tip = scope.numInsertedNodes() - 1;
-        std::map<int, double> depths;
-        const std::array<double, 5> depth{15e-3, 10e-3, 6e-3, 3e-3, 1e-3};  // m, tip first
-        for (int k = 0; k < 5; ++k) {
-            depths[tip - 2 * k] = depth[static_cast<size_t>(k)];
-        }
-        const auto contacts = contactsOn(scope, depths);
+        const auto contacts = fiveCoupledContacts(scope);
         ContactCoupling coupling(kStiffness, 1.0, kLoopStep, 1.0, limits);
         coupling.update(contacts, scope.rod(), 0, kRigidWall);
         coupling.solveAndApply(scope.rod(), law());
@@ -566,6 +577,29 @@ TEST(ContactCoupling, TheSweepsStopAtTheirCapOrOnceTheLoadsSettle)
     EXPECT_LT(looser, settled) << "a looser tolerance stops sooner";
     EXPECT_LT(looserLeft, 0.02);
     EXPECT_GE(looserLeft, 1e-6);
+}
+
+// A solve that another solve of the step follows (solveAndApply()'s
+// lastSolve false) sweeps to SweepLimits::passTolerance; the last one to
+// SweepLimits::tolerance. The five coupled contacts above.
+TEST(ContactCoupling, ASolveThatAnotherFollowsSweepsToThePassTolerance)
+{
+    const auto solved = [](bool lastSolve) {
+        Colonoscope scope = straightScope(0.3);
+        const auto contacts = fiveCoupledContacts(scope);
+        colonosim::procedure::SweepLimits limits{500, 1e-6};
+        limits.passTolerance = 0.02;
+        ContactCoupling coupling(kStiffness, 1.0, kLoopStep, 1.0, limits);
+        coupling.update(contacts, scope.rod(), 0, kRigidWall);
+        coupling.solveAndApply(scope.rod(), law(), lastSolve);
+        return std::pair{coupling.sweeps(), coupling.residual()};
+    };
+    const auto [last, lastLeft] = solved(true);
+    const auto [pass, passLeft] = solved(false);
+    EXPECT_LT(lastLeft, 1e-6);
+    EXPECT_LT(passLeft, 0.02);
+    EXPECT_GE(passLeft, 1e-6) << "the pass stopped before the full tolerance";
+    EXPECT_LT(pass, last) << "and sooner";
 }
 
 // The prefix sweeps sum the same predicted motions as the dense ones through

@@ -436,23 +436,43 @@ namespace {
 // outside its range is refused with the parameter's name.
 TEST(ProcedureLoop, TheContactIsSolvedAtMostCouplingPassesTimesPerStep)
 {
-    for (const double passes : {1.0, 3.0}) {
-        ProcedureSettings settings;
-        settings.contact.couplingPasses = passes;
-        ProcedureLoop loop(defaultColon(), settings);
-        InputSample input;
-        int fewest = 100;
-        int most = 0;
-        for (int s = 1; s <= 500; ++s) {
-            input.insertion = 0.5 * s * settings.stepping.loopStep;  // the 0.5 m/s push above
-            loop.step(input);
-            fewest = std::min(fewest, loop.couplingPasses());
-            most = std::max(most, loop.couplingPasses());
-        }
-        EXPECT_GE(fewest, 1) << passes;
-        EXPECT_EQ(most, static_cast<int>(passes)) << "the shaft against the flexure takes every pass allowed";
-        if (passes > 1.0) {
-            EXPECT_LT(fewest, most) << "a step whose loads settle at once stops early";
+    // Every solve sweeping to contact.sweepTolerance, a step stops once its
+    // loads settle (the default); with a looser contact.passSweepTolerance
+    // for the solves another follows, every step runs all its passes and its
+    // last solve sweeps to contact.sweepTolerance.
+    for (const bool loose : {false, true}) {
+        for (const double passes : {1.0, 3.0}) {
+            ProcedureSettings settings;
+            settings.contact.couplingPasses = passes;
+            settings.contact.passSweepTolerance = loose ? 3e-3 : settings.contact.sweepTolerance;
+            ASSERT_EQ(loose, settings.contact.passSweepTolerance > settings.contact.sweepTolerance);
+            ProcedureLoop loop(defaultColon(), settings);
+            InputSample input;
+            int fewest = 100;
+            int most = 0;
+            int unsettled = 0;
+            for (int s = 1; s <= 500; ++s) {
+                input.insertion = 0.5 * s * settings.stepping.loopStep;  // the 0.5 m/s push above
+                loop.step(input);
+                fewest = std::min(fewest, loop.couplingPasses());
+                most = std::max(most, loop.couplingPasses());
+                const auto& coupling = loop.coupling();
+                if (coupling.residual() >= settings.contact.sweepTolerance &&
+                    coupling.sweeps() < settings.contact.couplingSweeps) {
+                    ++unsettled;
+                }
+            }
+            EXPECT_GE(fewest, 1) << passes;
+            EXPECT_EQ(most, static_cast<int>(passes))
+                << "the shaft against the flexure takes every pass allowed";
+            EXPECT_EQ(unsettled, 0) << "a step's last solve sweeps to contact.sweepTolerance or to the cap";
+            if (passes > 1.0) {
+                if (loose) {
+                    EXPECT_EQ(fewest, most) << "with looser passes every step runs them all";
+                } else {
+                    EXPECT_LT(fewest, most) << "a step whose loads settle at once stops early";
+                }
+            }
         }
     }
     ProcedureSettings bad;
@@ -557,6 +577,8 @@ TEST(ProcedureLoop, SweepLimitsOutsideTheirRangeAreRefusedByName)
     sweeps.contact.couplingSweeps = 0.0;
     ProcedureSettings tolerance;
     tolerance.contact.sweepTolerance = 1.0;
+    ProcedureSettings passTolerance;
+    passTolerance.contact.passSweepTolerance = 1.0;
     ProcedureSettings prefix;
     prefix.contact.prefixSweeps = 2.0;
     ProcedureSettings points;
@@ -567,8 +589,9 @@ TEST(ProcedureLoop, SweepLimitsOutsideTheirRangeAreRefusedByName)
     pleats.contact.pleatSearch = -1.0;
     for (const auto& [settings, name] :
          {std::pair{sweeps, "contact.couplingSweeps"}, std::pair{tolerance, "contact.sweepTolerance"},
-          std::pair{prefix, "contact.prefixSweeps"}, std::pair{points, "contact.elementPoints"},
-          std::pair{side, "contact.sideNormals"}, std::pair{pleats, "contact.pleatSearch"}}) {
+          std::pair{passTolerance, "contact.passSweepTolerance"}, std::pair{prefix, "contact.prefixSweeps"},
+          std::pair{points, "contact.elementPoints"}, std::pair{side, "contact.sideNormals"},
+          std::pair{pleats, "contact.pleatSearch"}}) {
         try {
             ProcedureLoop loop(defaultColon(), settings);
             ADD_FAILURE() << name << " accepted";
