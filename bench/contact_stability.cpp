@@ -148,7 +148,7 @@ int main(int argc, char** argv)
                 stickingFriction = bench::parseList(flag, value, spec.minValue, spec.maxValue).front();
             } else if (flag == "--pass-tolerance") {
                 const auto& spec = contact::ContactParameters::passToleranceSpec;
-                passTolerance = bench::parseList(flag, value, spec.minValue, spec.maxValue).front();
+                passTolerance = bench::parseNumber(flag, value, spec.minValue, spec.maxValue);
             } else if (flag == "--element-points") {
                 const auto& spec = contact::ContactParameters::elementPointsSpec;
                 elementPoints = bench::parseList(flag, value, spec.minValue, spec.maxValue);

@@ -93,9 +93,8 @@ struct ContactParameters {
         "the sweeps of a contact solve that another solve of the same loop step follows (all of "
         "contact.couplingPasses but the last) stop once no node's normal load changed by more than this in a "
         "sweep; the last solve sweeps to contact.sweepTolerance. Above contact.sweepTolerance every step "
-        "runs "
-        "all its passes; at or below it (the default) every solve sweeps to contact.sweepTolerance and the "
-        "passes stop once the loads settle",
+        "runs all its passes; at or below it (the default) every solve sweeps to contact.sweepTolerance and "
+        "the passes stop once the loads settle",
         "model choice: off (equal to contact.sweepTolerance). At 3 mN the expert's steps from 60 s on the "
         "default colon took 42 sweeps against 81, the last solve's 26 unchanged, but two hard cases failed: "
         "the hooked shaft's handle torque reached 3.97 N m against its bound of 3.42 (4.39 at 1 mN), and the "

@@ -94,8 +94,8 @@
 namespace colonosim::procedure {
 
 /// When a contact solve's Gauss-Seidel sweeps stop (contact.couplingSweeps,
-/// contact.sweepTolerance and contact.passSweepTolerance), and how they sum the load changes' effect
-/// (contact.prefixSweeps).
+/// contact.sweepTolerance and contact.passSweepTolerance), and how they sum
+/// the load changes' effect (contact.prefixSweeps).
 struct SweepLimits {
     int maxSweeps = 30;
     double tolerance = 1e-4;  ///< N: the largest change of a normal load in a sweep that stops them
