@@ -117,18 +117,23 @@ void ContactCoupling::buildCompliance(const scope::DiscreteRod& rod)
     // joint min(a, b) - 1 (X = [x]x, X^T = -X).
     // A point inside an element moves as a node there (ContactPoints.h): the
     // same sums up to the joints that move both.
+    // The active points run from base to tip, so for b >= a the sums are
+    // those up to a's joints, and X_a^T A and X_a^T B are taken once per a.
     const auto m = m_active.size();
     m_block.resize(m * m);
     for (size_t a = 0; a < m; ++a) {
         const Eigen::Matrix3d xa = skew(m_at[a]);
+        const auto own = static_cast<size_t>(m_points.joints(m_active[a]));
+        const Eigen::Matrix3d xaA = xa.transpose() * m_prefixA[own];
+        const Eigen::Matrix3d xaB = xa.transpose() * m_prefixB[own];
         for (size_t b = a; b < m; ++b) {
             const Eigen::Matrix3d xb = skew(m_at[b]);
-            const auto upto =
-                static_cast<size_t>(std::min(m_points.joints(m_active[a]), m_points.joints(m_active[b])));
-            const Eigen::Matrix3d& pa = m_prefixA[upto];
+            const auto upto = std::min(own, static_cast<size_t>(m_points.joints(m_active[b])));
             const Eigen::Matrix3d& pb = m_prefixB[upto];
             const Eigen::Matrix3d c =
-                xa.transpose() * pa * xb - xa.transpose() * pb - pb.transpose() * xb + m_prefixC[upto];
+                upto == own ? Eigen::Matrix3d(xaA * xb - xaB - pb.transpose() * xb + m_prefixC[upto])
+                            : Eigen::Matrix3d(xa.transpose() * m_prefixA[upto] * xb - xa.transpose() * pb -
+                                              pb.transpose() * xb + m_prefixC[upto]);
             m_block[a * m + b] = c;
             m_block[b * m + a] = c.transpose();
         }
@@ -242,15 +247,16 @@ void ContactCoupling::solve(const std::vector<contact::LumenNodeContact>& contac
             }
             // The load's direction; the depth is measured along n.
             const Eigen::Vector3d d = loadDirection(a, n);
-            const double g = m_sideNormals
-                                 ? std::max(0.0, n.dot(m_block[a * m + a] * d) + m_wall[a * m + a] * n.dot(d))
-                                 : n.dot(m_block[a * m + a] * n) + m_wall[a * m + a];
+            const Eigen::Vector3d moves =
+                m_block[a * m + a] * d;  // the rod's response to a unit load along d
+            const double g = m_sideNormals ? std::max(0.0, n.dot(moves) + m_wall[a * m + a] * n.dot(d))
+                                           : n.dot(moves) + m_wall[a * m + a];
             double lambda =
                 std::max(0.0, m_lambda[a] + (m_stiffness * depth - m_lambda[a]) / (1.0 + m_stiffness * g));
             // Trust region on the contact-driven motion of this step.
             // The whole motion, not only its normal part: a load along a bent
             // tip's axis swings the tip sideways.
-            const double reach = (m_block[a * m + a] * d).norm() + m_wall[a * m + a];
+            const double reach = moves.norm() + m_wall[a * m + a];
             const double limit = m_maxStep / std::max(reach, 1e-12);
             const double raise =
                 (m_maxStep + m_growth[static_cast<size_t>(m_active[a])]) / std::max(reach, 1e-12);
