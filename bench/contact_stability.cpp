@@ -14,7 +14,7 @@
 //   contact_stability [--seconds S] [--seeds 0,1,2,3] [--relaxation 1,0.5,0.3] [--max-node-step M]
 //                     [--sweeps 30] [--operator expert|novice] [--prefix-sweeps 0|1]
 //                     [--element-points 0,1] [--side-normals 0,1] [--pleat-search 0,1]
-//                     [--sticking-friction 0|1] [--pass-tolerance N]
+//                     [--sticking-friction 0|1] [--pass-tolerance N] [--acceleration 0..10]
 //
 // Seed 0 is the default colon; any other seed is a generated patient.
 
@@ -58,21 +58,14 @@ struct Outcome {
     long perforating = 0;       ///< steps recorded as perforating
 };
 
-Outcome runOperator(std::uint64_t seed, const procedure::OperatorStyle& style, double relaxation,
-                    double maxNodeStep, double sweeps, double prefixSweeps, double elementPoints,
-                    double sideNormals, double pleatSearch, double stickingFriction, double passTolerance,
-                    double seconds)
+/// `options`: the contact's parameters under study (a generated patient's
+/// case sets none of them: its contact is the defaults').
+Outcome runOperator(std::uint64_t seed, const procedure::OperatorStyle& style,
+                    const contact::ContactParameters& options, double maxNodeStep, double seconds)
 {
     const bench::Patient patient = bench::patientFromSeed(seed);
     procedure::ProcedureSettings settings = patient.settings;
-    settings.contact.loadRelaxation = relaxation;
-    settings.contact.couplingSweeps = sweeps;
-    settings.contact.prefixSweeps = prefixSweeps;
-    settings.contact.elementPoints = elementPoints;
-    settings.contact.sideNormals = sideNormals;
-    settings.contact.pleatSearch = pleatSearch;
-    settings.contact.stickingFriction = stickingFriction;
-    settings.contact.passSweepTolerance = passTolerance;
+    settings.contact = options;
     settings.scope.maxNodeStep = maxNodeStep;
     const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(patient.anatomy);
     procedure::ProcedureLoop loop(anatomy, settings);
@@ -80,7 +73,7 @@ Outcome runOperator(std::uint64_t seed, const procedure::OperatorStyle& style, d
     Outcome outcome;
     Eigen::Vector3d previous = loop.scope().tipPose().position;
     const auto steps = static_cast<long>(seconds / settings.stepping.loopStep);
-    const int cap = static_cast<int>(std::lround(sweeps));
+    const int cap = static_cast<int>(std::lround(options.couplingSweeps));
     for (long s = 0; s < steps && !hands.finished(); ++s) {
         const procedure::InputSample input = hands.next(loop);
         const auto start = std::chrono::steady_clock::now();
@@ -120,9 +113,8 @@ int main(int argc, char** argv)
     double maxNodeStep = scope::ScopeParameters{}.maxNodeStep;
     std::vector<double> sweepCaps{contact::ContactParameters{}.couplingSweeps};
     bool novice = false;
-    double prefixSweeps = contact::ContactParameters{}.prefixSweeps;
-    double stickingFriction = contact::ContactParameters{}.stickingFriction;
-    double passTolerance = contact::ContactParameters{}.passSweepTolerance;
+    // The single-valued options; the lists below are swept.
+    contact::ContactParameters options;
     std::vector<double> elementPoints{contact::ContactParameters{}.elementPoints};
     std::vector<double> sideNormals{contact::ContactParameters{}.sideNormals};
     std::vector<double> pleatSearch{contact::ContactParameters{}.pleatSearch};
@@ -142,13 +134,17 @@ int main(int argc, char** argv)
                 sweepCaps = bench::parseList(flag, value, spec.minValue, spec.maxValue);
             } else if (flag == "--prefix-sweeps") {
                 const auto& spec = contact::ContactParameters::prefixSweepsSpec;
-                prefixSweeps = bench::parseList(flag, value, spec.minValue, spec.maxValue).front();
+                options.prefixSweeps = bench::parseList(flag, value, spec.minValue, spec.maxValue).front();
             } else if (flag == "--sticking-friction") {
                 const auto& spec = contact::ContactParameters::stickingFrictionSpec;
-                stickingFriction = bench::parseList(flag, value, spec.minValue, spec.maxValue).front();
+                options.stickingFriction =
+                    bench::parseList(flag, value, spec.minValue, spec.maxValue).front();
             } else if (flag == "--pass-tolerance") {
                 const auto& spec = contact::ContactParameters::passToleranceSpec;
-                passTolerance = bench::parseNumber(flag, value, spec.minValue, spec.maxValue);
+                options.passSweepTolerance = bench::parseNumber(flag, value, spec.minValue, spec.maxValue);
+            } else if (flag == "--acceleration") {
+                const auto& spec = contact::ContactParameters::accelerationSpec;
+                options.sweepAcceleration = bench::parseNumber(flag, value, spec.minValue, spec.maxValue);
             } else if (flag == "--element-points") {
                 const auto& spec = contact::ContactParameters::elementPointsSpec;
                 elementPoints = bench::parseList(flag, value, spec.minValue, spec.maxValue);
@@ -168,7 +164,7 @@ int main(int argc, char** argv)
                     "unknown option '" + flag +
                     "' (allowed: --seconds, --seeds, --relaxation, --max-node-step, --sweeps, --operator, "
                     "--prefix-sweeps, --element-points, --side-normals, --pleat-search, "
-                    "--sticking-friction, --pass-tolerance)");
+                    "--sticking-friction, --pass-tolerance, --acceleration)");
             }
         });
     } catch (const std::exception& error) {
@@ -177,7 +173,7 @@ int main(int argc, char** argv)
     }
     std::printf(
         "%s, %.1f s per run, scope.maxNodeStep %.4g m, contact.prefixSweeps %.0f, contact.stickingFriction "
-        "%.0f, contact.passSweepTolerance %.3g N; fast: tip steps longer "
+        "%.0f, contact.passSweepTolerance %.3g N, contact.sweepAcceleration %.0f; fast: tip steps longer "
         "than 2 mm; outside: "
         "steps with the tip more than a scope diameter into the wall; guarded: steps with a chain solve "
         "refused by the step guard; us/step: wall-clock time of a loop step; nodes: mean nodes in the "
@@ -186,7 +182,8 @@ int main(int argc, char** argv)
         "contact.pleatSearch; handle_N, "
         "wall_N: peak handle force "
         "and peak contact load on the wall; mesentery: peak strain; perforating: steps recorded so\n",
-        novice ? "novice" : "expert", seconds, maxNodeStep, prefixSweeps, stickingFriction, passTolerance);
+        novice ? "novice" : "expert", seconds, maxNodeStep, options.prefixSweeps, options.stickingFriction,
+        options.passSweepTolerance, options.sweepAcceleration);
     std::printf("%-10s %-6s %-6s %-4s %-5s %-6s %10s %10s %12s %12s %9s %9s %7s %8s %10s %9s %9s %10s %11s\n",
                 "relaxation", "sweeps", "points", "side", "pleat", "seed", "fast", "outside", "deepest_mm",
                 "furthest_m", "guarded", "us/step", "nodes", "capped", "left_mN", "handle_N", "wall_N",
@@ -198,10 +195,13 @@ int main(int argc, char** argv)
                 for (const double sweeps : sweepCaps) {
                     for (const double relaxation : relaxations) {
                         Outcome total;
+                        options.loadRelaxation = relaxation;
+                        options.couplingSweeps = sweeps;
+                        options.elementPoints = points;
+                        options.sideNormals = side;
+                        options.pleatSearch = pleat;
                         for (const std::uint64_t seed : seeds) {
-                            const Outcome o =
-                                runOperator(seed, style, relaxation, maxNodeStep, sweeps, prefixSweeps,
-                                            points, side, pleat, stickingFriction, passTolerance, seconds);
+                            const Outcome o = runOperator(seed, style, options, maxNodeStep, seconds);
                             const double steps = static_cast<double>(std::max(o.steps, 1L));
                             std::printf("%-10.2f %-6.0f %-6.0f %-4.0f %-5.0f %-6llu %10ld %10ld %12.1f "
                                         "%12.3f %9ld %9.0f %7.1f "

@@ -6,7 +6,7 @@ namespace colonosim::contact {
 
 namespace {
 using P = ContactParameters;
-constexpr std::array<Field<P>, 16> kContactFields{{
+constexpr std::array<Field<P>, 17> kContactFields{{
     {&P::stiffnessSpec, &P::contactStiffness},
     {&P::dampingSpec, &P::contactDamping},
     {&P::frictionSpec, &P::frictionCoefficient},
@@ -16,6 +16,7 @@ constexpr std::array<Field<P>, 16> kContactFields{{
     {&P::sweepToleranceSpec, &P::sweepTolerance},
     {&P::passToleranceSpec, &P::passSweepTolerance},
     {&P::prefixSweepsSpec, &P::prefixSweeps},
+    {&P::accelerationSpec, &P::sweepAcceleration},
     {&P::elementPointsSpec, &P::elementPoints},
     {&P::sideNormalsSpec, &P::sideNormals},
     {&P::stickingFrictionSpec, &P::stickingFriction},

@@ -1,5 +1,7 @@
 #include "simcore/procedure/ContactCoupling.h"
 
+#include <Eigen/Cholesky>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -195,9 +197,28 @@ void ContactCoupling::solve(const std::vector<contact::LumenNodeContact>& contac
     const bool prefix = m_limits.prefixSums;
     m_sweeps = 0;
     m_residual = 0.0;
+    // No more differences than the loads have dimensions (the least squares
+    // would be underdetermined).
+    const int depth =
+        std::min(std::clamp(m_limits.acceleration, 0, kMaxAcceleration), static_cast<int>(m) - 1);
+    if (depth > 0) {
+        for (auto* v : {&m_andersonF, &m_andersonG}) {
+            v->resize(m * static_cast<size_t>(depth));
+        }
+        for (auto* v : {&m_andersonX, &m_andersonFPrev, &m_andersonGPrev}) {
+            v->resize(m);
+        }
+    }
+    int stored = 0;
+    int next = 0;
+    double lastChange = 0.0;
     for (int sweep = 0; sweep < m_limits.maxSweeps && m > 0; ++sweep) {
         ++m_sweeps;
         double largest = 0.0;
+        if (depth > 0) {
+            std::copy(m_lambda.begin(), m_lambda.begin() + static_cast<std::ptrdiff_t>(m),
+                      m_andersonX.begin());
+        }
         // The prefix sweeps' sums (SweepLimits): every node on the tip side.
         Eigen::Vector3d s0 = Eigen::Vector3d::Zero();
         Eigen::Vector3d s1 = Eigen::Vector3d::Zero();
@@ -281,6 +302,55 @@ void ContactCoupling::solve(const std::vector<contact::LumenNodeContact>& contac
         if (largest < tolerance) {
             break;
         }
+        if (depth > 0) {
+            accelerate(depth, sweep, stored, next, lastChange);
+        }
+    }
+}
+
+void ContactCoupling::accelerate(int depth, int sweep, int& stored, int& next, double& lastChange)
+{
+    // Type-II Anderson: with f_k = g_k - x_k the sweep's change from x_k to
+    // its result g_k, gamma = argmin |f_k - dF gamma| over the last depth
+    // differences dF of successive f, and x_{k+1} = g_k - dG gamma.
+    const auto m = static_cast<Eigen::Index>(m_active.size());
+    using Vector = Eigen::Map<Eigen::VectorXd>;
+    using Matrix = Eigen::Map<Eigen::MatrixXd>;
+    const Vector x(m_andersonX.data(), m);
+    const Vector g(m_lambda.data(), m);
+    Vector fPrev(m_andersonFPrev.data(), m);
+    Vector gPrev(m_andersonGPrev.data(), m);
+    Matrix dF(m_andersonF.data(), m, depth);
+    Matrix dG(m_andersonG.data(), m, depth);
+    // A sweep whose change grew restarts the history (the safeguard of
+    // restarted Anderson): the combination is taken again from plain sweeps.
+    const double change = (g - x).cwiseAbs().maxCoeff();
+    if (sweep > 0 && change > lastChange) {
+        stored = 0;
+        next = 0;
+    } else if (sweep > 0) {
+        dF.col(next) = (g - x) - fPrev;
+        dG.col(next) = g - gPrev;
+        next = (next + 1) % depth;
+        stored = std::min(stored + 1, depth);
+    }
+    lastChange = change;
+    fPrev = g - x;
+    gPrev = g;
+    if (stored == 0) {
+        return;
+    }
+    using Small =
+        Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxAcceleration, kMaxAcceleration>;
+    using SmallVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxAcceleration, 1>;
+    Small gram = dF.leftCols(stored).transpose() * dF.leftCols(stored);
+    const SmallVector rhs = dF.leftCols(stored).transpose() * fPrev;
+    gram.diagonal().array() += 1e-12 * gram.diagonal().maxCoeff() + 1e-300;
+    const SmallVector gamma = gram.ldlt().solve(rhs);
+    for (Eigen::Index a = 0; a < m; ++a) {
+        const auto i = static_cast<size_t>(a);
+        m_lambda[i] = std::max(0.0, g(a) - dG.row(a).head(stored).dot(gamma));
+        m_force[i] = m_lambda[i] * m_direction[i];
     }
 }
 

@@ -26,7 +26,12 @@
 ///     lambda_a += (k_c depth_a - lambda_a) / (1 + k_c G_aa),  lambda_a >= 0,
 /// G_aa = n_a^T C_aa n_a (plus the wall's part below), until the largest
 /// change is below contact.sweepTolerance (or contact.couplingSweeps sweeps,
-/// 0.1 mN and 30 by default). The normal is re-measured in every
+/// 0.1 mN and 30 by default). Between sweeps, Anderson acceleration
+/// (contact.sweepAcceleration) replaces the loads by the combination of the
+/// last few sweeps' results whose changes cancel best: deep in, each node's
+/// load drifts about over many sweeps (a slowly decaying oscillation that the
+/// plain sweeps follow at 0.85-0.9 a sweep), and the combination cuts across
+/// it. The stop is judged on a plain sweep's change either way. The normal is re-measured in every
 /// sweep: on a curved wall it turns as the node moves (by dx / lever, with a
 /// gain lambda G_aa / lever that easily exceeds 1 on a compliant tip), and a
 /// normal frozen for the step makes the tip swing from side to side. The
@@ -115,7 +120,15 @@ struct SweepLimits {
     /// (solveAndApply()'s `lastSolve` false): its loads are re-measured and
     /// solved again, so their last bits are not kept.
     double passTolerance = 1e-4;
+    /// Anderson acceleration of the sweeps: after each sweep the normal
+    /// loads are replaced by the combination of the last `acceleration`
+    /// sweeps' results whose changes cancel best (least squares), projected
+    /// to lambda >= 0; 0 sweeps plainly. The stop is always judged on a plain
+    /// sweep's change. At most kMaxAcceleration.
+    int acceleration = 0;
 };
+
+inline constexpr int kMaxAcceleration = 10;
 
 class ContactCoupling {
 public:
@@ -218,6 +231,8 @@ private:
                            const Eigen::VectorXd& wallCompliance);
     /// Sweeps until no normal load changes by more than `tolerance` (N) in a sweep, or the cap.
     void solve(const std::vector<contact::LumenNodeContact>& contacts, double tolerance);
+    /// One Anderson step after sweep `sweep` (SweepLimits::acceleration).
+    void accelerate(int depth, int sweep, int& stored, int& next, double& lastChange);
     void measureAxes(const scope::DiscreteRod& rod);
     /// The direction of the load at active point a for the wall's normal `n`.
     [[nodiscard]] Eigen::Vector3d loadDirection(size_t a, const Eigen::Vector3d& n) const;
@@ -256,6 +271,10 @@ private:
     std::vector<Eigen::Vector3d> m_direction;  ///< each active point's load direction (unit)
     std::vector<Eigen::Vector3d> m_axis;       ///< the scope's axis there (unit; 0: none), side normals only
     std::vector<double> m_lambda, m_startLambda;
+    // Anderson acceleration (SweepLimits::acceleration), column-major m x depth:
+    // the differences of successive sweeps' changes and of their results.
+    std::vector<double> m_andersonF, m_andersonG;
+    std::vector<double> m_andersonX, m_andersonFPrev, m_andersonGPrev;
     std::vector<double> m_slipCompliance;  ///< R_a, m/N (measureSlipCompliance())
     std::vector<Eigen::Vector3d> m_at;     ///< each active point's position, m
     const std::vector<contact::LumenNodeContact>* m_contacts = nullptr;

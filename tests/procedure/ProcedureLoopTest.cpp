@@ -581,6 +581,8 @@ TEST(ProcedureLoop, SweepLimitsOutsideTheirRangeAreRefusedByName)
     passTolerance.contact.passSweepTolerance = 1.0;
     ProcedureSettings prefix;
     prefix.contact.prefixSweeps = 2.0;
+    ProcedureSettings acceleration;
+    acceleration.contact.sweepAcceleration = 11.0;
     ProcedureSettings points;
     points.contact.elementPoints = 4.0;
     ProcedureSettings side;
@@ -591,7 +593,7 @@ TEST(ProcedureLoop, SweepLimitsOutsideTheirRangeAreRefusedByName)
          {std::pair{sweeps, "contact.couplingSweeps"}, std::pair{tolerance, "contact.sweepTolerance"},
           std::pair{passTolerance, "contact.passSweepTolerance"}, std::pair{prefix, "contact.prefixSweeps"},
           std::pair{points, "contact.elementPoints"}, std::pair{side, "contact.sideNormals"},
-          std::pair{pleats, "contact.pleatSearch"}}) {
+          std::pair{pleats, "contact.pleatSearch"}, std::pair{acceleration, "contact.sweepAcceleration"}}) {
         try {
             ProcedureLoop loop(defaultColon(), settings);
             ADD_FAILURE() << name << " accepted";
