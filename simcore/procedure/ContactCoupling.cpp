@@ -119,23 +119,20 @@ void ContactCoupling::buildCompliance(const scope::DiscreteRod& rod)
     // joint min(a, b) - 1 (X = [x]x, X^T = -X).
     // A point inside an element moves as a node there (ContactPoints.h): the
     // same sums up to the joints that move both.
-    // The active points run from base to tip, so for b >= a the sums are
+    // update() lists the active points from base to tip, so the joints that
+    // move a point never decrease along m_active: for b >= a the sums are
     // those up to a's joints, and X_a^T A and X_a^T B are taken once per a.
     const auto m = m_active.size();
     m_block.resize(m * m);
     for (size_t a = 0; a < m; ++a) {
         const Eigen::Matrix3d xa = skew(m_at[a]);
-        const auto own = static_cast<size_t>(m_points.joints(m_active[a]));
-        const Eigen::Matrix3d xaA = xa.transpose() * m_prefixA[own];
-        const Eigen::Matrix3d xaB = xa.transpose() * m_prefixB[own];
+        const auto upto = static_cast<size_t>(m_points.joints(m_active[a]));
+        const Eigen::Matrix3d xaA = xa.transpose() * m_prefixA[upto];
+        const Eigen::Matrix3d xaB = xa.transpose() * m_prefixB[upto];
+        const Eigen::Matrix3d& pb = m_prefixB[upto];
         for (size_t b = a; b < m; ++b) {
             const Eigen::Matrix3d xb = skew(m_at[b]);
-            const auto upto = std::min(own, static_cast<size_t>(m_points.joints(m_active[b])));
-            const Eigen::Matrix3d& pb = m_prefixB[upto];
-            const Eigen::Matrix3d c =
-                upto == own ? Eigen::Matrix3d(xaA * xb - xaB - pb.transpose() * xb + m_prefixC[upto])
-                            : Eigen::Matrix3d(xa.transpose() * m_prefixA[upto] * xb - xa.transpose() * pb -
-                                              pb.transpose() * xb + m_prefixC[upto]);
+            const Eigen::Matrix3d c = xaA * xb - xaB - pb.transpose() * xb + m_prefixC[upto];
             m_block[a * m + b] = c;
             m_block[b * m + a] = c.transpose();
         }

@@ -13,9 +13,6 @@
 
 #include <gtest/gtest.h>
 
-#include <iostream>
-#include <tuple>
-
 #include <array>
 #include <cmath>
 #include <iostream>
