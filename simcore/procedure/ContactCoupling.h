@@ -87,6 +87,7 @@
 /// coupling does; the remainder follows over the next solves (the passes of
 /// the step and the next steps, 1 ms each).
 ///
+#include "simcore/contact/ContactParameters.h"
 #include "simcore/contact/LumenContact.h"
 #include "simcore/procedure/ContactPoints.h"
 #include "simcore/scope/DiscreteRod.h"
@@ -128,7 +129,10 @@ struct SweepLimits {
     int acceleration = 0;
 };
 
-inline constexpr int kMaxAcceleration = 10;
+/// The most sweeps Anderson acceleration combines: contact.sweepAcceleration's
+/// upper bound, declared once with the parameter.
+inline constexpr int kMaxAcceleration =
+    static_cast<int>(contact::ContactParameters::accelerationSpec.maxValue);
 
 class ContactCoupling {
 public:

@@ -15,8 +15,8 @@
 
 #include <array>
 #include <cmath>
-#include <iostream>
 #include <map>
+#include <string>
 #include <tuple>
 
 namespace {
@@ -648,7 +648,8 @@ TEST(ContactCoupling, AcceleratedSweepsSettleOnTheSameLoads)
     EXPECT_LT(plainLeft, 1e-9);
     for (const int depth : {2, 5, 10}) {
         const auto [sweeps, left, loads] = solved(depth);
-        std::cout << "depth " << depth << ": " << sweeps << " sweeps against " << plainSweeps << '\n';
+        RecordProperty("sweeps_at_depth_" + std::to_string(depth),
+                       std::to_string(sweeps) + " against " + std::to_string(plainSweeps));
         EXPECT_LT(left, 1e-9) << "depth " << depth;
         EXPECT_LT(sweeps, 500) << "depth " << depth;
         ASSERT_EQ(loads.size(), plain.size());
