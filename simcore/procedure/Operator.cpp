@@ -80,17 +80,21 @@ constexpr double kPassLoopLength = 0.15;
 
 }  // namespace
 
-/// The expert backs off at 8 N of felt handle force while its tip is short
-/// of the splenic flexure and at 12 N once the tip has reached it. Past the
-/// flexure the shaft lies through the sigmoid and the descending colon, and
-/// the sigmoid resists the push: on the default colon, at 55 s, the contact
+/// The expert backs off at 8 N of felt handle force while its tip is in the
+/// rectum or the sigmoid and at 12 N once the tip has reached the descending
+/// colon. From there on the shaft lies through the whole sigmoid, and the
+/// sigmoid resists the push: on the default colon, at 55 s, the contact
 /// loads' components along the shaft summed to 9-11 N in the sigmoid against
 /// 7-8 N of handle force, and at 8 N the expert backed off, re-inserted and
-/// backed off again at 0.74-0.78 m of insertion from 50 s to 150 s. 12 N is
-/// within what operators apply: they exceed 10 N about 5% of the time, with
-/// peaks of 43 N (Appleyard et al., Gastrointest Endosc 2000). The 8 N limit
-/// is kept short of the flexure: 9 N or 12 N from the start pushed the tip
-/// of generated patient 1 out through its sigmoid (176 steps more than a
+/// backed off again at 0.74-0.78 m of insertion from 50 s to 150 s. On
+/// generated patients 1 and 5, with the tip just past the sigmoid-descending
+/// junction, one contact point 2 cm behind the tip bore 4-9 N against the
+/// shaft (the wall's normal within 40 degrees of its axis), and at 8 N the expert
+/// backed off 3 cm and came back to the same place every 3 s for the whole
+/// run. 12 N is within what operators apply: they exceed 10 N about 5% of the
+/// time, with peaks of 43 N (Appleyard et al., Gastrointest Endosc 2000). The
+/// 8 N limit is kept in the sigmoid: 9 N or 12 N from the start pushed the
+/// tip of generated patient 1 out through its sigmoid (176 steps more than a
 /// scope diameter into the wall by 20 s, none at 8 N).
 double reductionTurn(LoopKind kind)
 {
@@ -139,8 +143,8 @@ InputSample ScriptedOperator::next(const ProcedureLoop& loop)
                       ? m_feltForce + std::min(1.0, dt / m_style.feelTime) * (raw - m_feltForce)
                       : raw;
     const double force = m_feltForce;
-    m_reachedFlexure = m_reachedFlexure || frame.tipSegment >= geometry::Segment::SplenicFlexure;
-    const double forceLimit = m_reachedFlexure ? m_style.flexureForceLimit : m_style.forceLimit;
+    m_pastSigmoid = m_pastSigmoid || frame.tipSegment >= geometry::Segment::Descending;
+    const double forceLimit = m_pastSigmoid ? m_style.pastSigmoidForceLimit : m_style.forceLimit;
     const double maxInsertion = loop.scope().parameters().workingLength - 0.05;
 
     // The lumen as the camera sees it: the deformed lumen's centre 4 cm

@@ -8,7 +8,7 @@
 ///     dials, handing left/right deflection over to the up/down dial by
 ///     shaft torque (torque steering), and feeds only while the lumen is
 ///     centred; when the handle force it feels (smoothed over 0.1 s)
-///     exceeds 8 N (12 N once its tip has reached the splenic flexure),
+///     exceeds 8 N (12 N once its tip has reached the descending colon),
 ///     or the shaft stores a loop and the tip has stopped
 ///     following it (insertion over tip advance above 2, the clinical
 ///     warning sign; a loop the tip still advances through is let be),
@@ -60,8 +60,8 @@ struct OperatorStyle {
     double withdrawSpeed;  ///< m/s after the cecum
     double forceLimit;     ///< N of handle force that makes it back off
     /// N of handle force that makes it back off once its tip has reached the
-    /// splenic flexure (see expertStyle()).
-    double flexureForceLimit;
+    /// descending colon, the shaft lying through the sigmoid (see expertStyle()).
+    double pastSigmoidForceLimit;
     bool reducesLoops;    ///< withdraws with clockwise torque when a loop forms
     double steeringGain;  ///< 1/s: rate at which the dials follow the lumen's angular offset
     double markDelay;     ///< s a lesion stays in view before it is marked (recognition time)
@@ -137,14 +137,14 @@ private:
     double m_feltForce = 0.0;  ///< the handle force as the hand feels it (smoothed), N
     double m_offCentre = 0.0;  ///< the lumen's angular offset in the view, rad
     InputSample m_input;
-    double m_reduceUntil = 0.0;     ///< insertion at which a loop reduction (or a pull-back) ends, m
-    double m_reduceFloor = 0.0;     ///< insertion at which a loop reduction ends even with the loop there, m
-    bool m_reachedFlexure = false;  ///< the tip has been in the splenic flexure or beyond
-    double m_blockedSince = -1.0;   ///< s: since when a dial is at its stop with no headway; < 0: not
-    double m_blockedAt = 0.0;       ///< insertion then, m
-    double m_stillSince = -1.0;     ///< s: since when the scope has not been fed kBlockedFeed; < 0: not
-    double m_stillAt = 0.0;         ///< insertion then, m
-    int m_pullBacks = 0;            ///< pull-backs tried at the present bend
+    double m_reduceUntil = 0.0;    ///< insertion at which a loop reduction (or a pull-back) ends, m
+    double m_reduceFloor = 0.0;    ///< insertion at which a loop reduction ends even with the loop there, m
+    bool m_pastSigmoid = false;    ///< the tip has been in the descending colon or beyond
+    double m_blockedSince = -1.0;  ///< s: since when a dial is at its stop with no headway; < 0: not
+    double m_blockedAt = 0.0;      ///< insertion then, m
+    double m_stillSince = -1.0;    ///< s: since when the scope has not been fed kBlockedFeed; < 0: not
+    double m_stillAt = 0.0;        ///< insertion then, m
+    int m_pullBacks = 0;           ///< pull-backs tried at the present bend
     LoopReductionCount m_reductions;  ///< loop reductions at one place, and the loop let be
     double m_bendArc = -1.0;          ///< where along the colon the tip was blocked, m
     double m_slideUntil = 0.0;        ///< insertion at which a slide-by gives up, m
