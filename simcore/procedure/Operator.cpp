@@ -80,6 +80,11 @@ constexpr double kPassLoopLength = 0.15;
 
 }  // namespace
 
+double reductionTurn(LoopKind kind)
+{
+    return kind == LoopKind::ReverseAlpha ? 1.0 : -1.0;
+}
+
 /// The expert backs off at 8 N of felt handle force while its tip is in the
 /// rectum or the sigmoid and at 12 N once the tip has reached the descending
 /// colon. From there on the shaft lies through the whole sigmoid, and the
@@ -96,11 +101,6 @@ constexpr double kPassLoopLength = 0.15;
 /// 8 N limit is kept in the sigmoid: 9 N or 12 N from the start pushed the
 /// tip of generated patient 1 out through its sigmoid (176 steps more than a
 /// scope diameter into the wall by 20 s, none at 8 N).
-double reductionTurn(LoopKind kind)
-{
-    return kind == LoopKind::ReverseAlpha ? 1.0 : -1.0;
-}
-
 OperatorStyle expertStyle()
 {
     return {0.03, 0.01, 8.0, 12.0, true, 2.0, 0.5, true, 0.1};
