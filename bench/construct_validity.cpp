@@ -2,15 +2,16 @@
 // the same generated patients, each for a set simulated time (or until it
 // has finished), scored from its recording by the scoring library. Per run:
 // the time to the cecum when it was reached, the furthest the tip got along
-// the colon, the looped time and the loops formed (with the alpha loops
-// among them), the peak handle force, and the steps with the tip more than a
-// scope diameter into the wall, and the steps whose chain solve the scope's
-// step guard refused (Colonoscope::step). Then, per metric, on how many patients the
-// expert did better than the novice.
+// the colon, the deepest insertion (a run that ends with the scope in to its
+// working length has run out of scope, not stalled), the looped time and the loops formed (with the alpha
+// loops among them), the peak handle force, and the steps with the tip more than a scope diameter into the
+// wall, and the steps whose chain solve the scope's step guard refused (Colonoscope::step). Then, per metric,
+// on how many patients the expert did better than the novice.
 //
 //   construct_validity [--seconds S] [--seeds 1,2,3,...] [--element-points 0|1]
 //                      [--side-normals 0|1] [--pleat-search 0|1] [--sticking-friction 0|1]
 //                      [--spin-friction 0|1] [--haustral-axial-ratio R] [--max-node-step M]
+//                      [--expert-insert-speed V] [--novice-steering-gain G]
 //                      [--require EXPR] [--until-cecum 0|1] [--who both|expert|novice]
 //
 // Seed 0 is the default colon; any other seed is a generated patient, drawn
@@ -23,8 +24,10 @@
 // contact.pleatSearch, contact.stickingFriction, contact.spinFriction;
 // each flag's default is the parameter's: off) and the
 // wall's tissue.haustralAxialRatio (1 by default) and the scope's step guard
-// (scope.maxNodeStep, m; 1 by default: off in practice) apply to both
-// operators' runs.
+// (scope.maxNodeStep, m; 0.2 by default) apply to both
+// operators' runs. Two what-if flags change one operator's style:
+// --expert-insert-speed (m/s; 0.03 by default) and --novice-steering-gain
+// (1/s; 0.5 by default, 0: the novice never turns the dials).
 
 #include "bench/ListArgument.h"
 #include "bench/PatientFromSeed.h"
@@ -51,8 +54,13 @@ using namespace colonosim;
 struct Run {
     double timeToCecum = -1.0;  ///< s; -1 when not reached
     double furthest = 0.0;      ///< m along the colon
-    double colonLength = 0.0;   ///< m
-    double loopedTime = 0.0;    ///< s
+    double inserted = 0.0;      ///< the deepest insertion, m
+    // Until the cecum (or the run's end), s: the scope fed in, drawn back, held still.
+    double feeding = 0.0;
+    double drawingBack = 0.0;
+    double holding = 0.0;
+    double colonLength = 0.0;  ///< m
+    double loopedTime = 0.0;   ///< s
     double loops = 0.0;
     double alphaLoops = 0.0;
     double peakForce = 0.0;  ///< N
@@ -98,11 +106,21 @@ Run runOperator(std::uint64_t seed, const procedure::OperatorStyle& style, doubl
     Run run;
     run.colonLength = anatomy.centreline.length();
     const auto steps = static_cast<long>(seconds / settings.stepping.loopStep);
+    double lastInsertion = 0.0;
     for (long s = 0; s < steps && !driver.finished() && !(options.untilCecum && loop.cecumReached()); ++s) {
         loop.step(driver.next(loop));
         run.outside += loop.lumen().contacts().back().depth > settings.scope.outerDiameter ? 1 : 0;
         run.guarded += loop.scope().guardRetries() > 0 ? 1 : 0;
         run.furthest = std::max(run.furthest, loop.lastFrame().tipArcLength);
+        const double insertion = loop.lastFrame().input.insertion;
+        run.inserted = std::max(run.inserted, insertion);
+        if (!loop.cecumReached()) {
+            const double dt = settings.stepping.loopStep;
+            (insertion > lastInsertion   ? run.feeding
+             : insertion < lastInsertion ? run.drawingBack
+                                         : run.holding) += dt;
+        }
+        lastInsertion = insertion;
     }
     scoring::ScoringContext context;
     context.colonLength = run.colonLength;
@@ -124,9 +142,11 @@ Run runOperator(std::uint64_t seed, const procedure::OperatorStyle& style, doubl
 void printRun(const char* who, std::uint64_t seed, const Run& r)
 {
     const std::string cecum = r.timeToCecum >= 0.0 ? bench::shortest(r.timeToCecum) : "-";
-    std::printf("%-7s %-6llu %10s %8.3f / %-6.3f %9.1f %6.0f %6.0f %10.2f %9ld %9ld\n", who,
-                static_cast<unsigned long long>(seed), cecum.c_str(), r.furthest, r.colonLength, r.loopedTime,
-                r.loops, r.alphaLoops, r.peakForce, r.outside, r.guarded);
+    std::printf(
+        "%-7s %-6llu %10s %8.3f / %-6.3f %10.3f %9.1f %6.0f %6.0f %10.2f %9ld %9ld %8.1f %8.1f %8.1f\n", who,
+        static_cast<unsigned long long>(seed), cecum.c_str(), r.furthest, r.colonLength, r.inserted,
+        r.loopedTime, r.loops, r.alphaLoops, r.peakForce, r.outside, r.guarded, r.feeding, r.drawingBack,
+        r.holding);
     std::fflush(stdout);
 }
 
@@ -138,6 +158,10 @@ int main(int argc, char** argv)
     std::vector<std::uint64_t> seeds{1, 2, 3, 4, 5, 6, 7, 8, 9, 10};
     ModelOptions options;
     Who who;
+    // The operators' styles; two what-if flags change them (the defaults are
+    // expertStyle() and noviceStyle()).
+    procedure::OperatorStyle expertStyle = procedure::expertStyle();
+    procedure::OperatorStyle noviceStyle = procedure::noviceStyle();
     try {
         bench::forEachOption(argc, argv, [&](const std::string& flag, const std::string& value) {
             if (flag == "--seconds") {
@@ -167,6 +191,11 @@ int main(int argc, char** argv)
             } else if (flag == "--max-node-step") {
                 const auto& spec = scope::ScopeParameters::maxNodeStepSpec;
                 options.maxNodeStep = bench::parseList(flag, value, spec.minValue, spec.maxValue).front();
+            } else if (flag == "--expert-insert-speed") {
+                // Up to the fastest insertion the contact is tested at (issue: 0.5 m/s).
+                expertStyle.insertSpeed = bench::parseList(flag, value, 0.001, 0.5).front();
+            } else if (flag == "--novice-steering-gain") {
+                noviceStyle.steeringGain = bench::parseList(flag, value, 0.0, 100.0).front();
             } else if (flag == "--require") {
                 options.constraints.require = cases::RequireExpression::parse(value);
             } else if (flag == "--who") {
@@ -186,6 +215,7 @@ int main(int argc, char** argv)
                                             "' (allowed: --seconds, --seeds, --element-points, "
                                             "--side-normals, --pleat-search, --sticking-friction, "
                                             "--spin-friction, --haustral-axial-ratio, --max-node-step, "
+                                            "--expert-insert-speed, --novice-steering-gain, "
                                             "--require, --until-cecum, --who)");
             }
         });
@@ -195,17 +225,23 @@ int main(int argc, char** argv)
     }
     std::printf(
         "expert and novice, %.1f s per run; cecum: time to cecum (s, - when not reached); furthest: "
-        "tip along the colon / colon length (m); outside: steps with the tip more than a scope diameter "
+        "tip along the colon / colon length (m); inserted: the deepest insertion (m; the operators "
+        "keep 5 cm of the scope's working length outside); outside: steps with the tip more than a scope "
+        "diameter "
         "into the wall; guarded: steps with a chain solve refused by the scope's step guard; "
+        "feed, back, hold: time until the cecum (or the run's end) with the scope fed in, drawn back, held "
+        "still (s); "
         "contact options: elementPoints %g, sideNormals %g, pleatSearch %g, stickingFriction %g, "
         "spinFriction %g; "
-        "tissue.haustralAxialRatio %g; scope.maxNodeStep %g m; patients: %s; %s\n",
+        "tissue.haustralAxialRatio %g; scope.maxNodeStep %g m; the expert feeds at %g m/s, the novice "
+        "steers at %g 1/s; patients: %s; %s\n",
         seconds, options.elementPoints, options.sideNormals, options.pleatSearch, options.stickingFriction,
-        options.spinFriction, options.haustralAxialRatio, options.maxNodeStep,
-        options.constraints.empty() ? "any" : options.constraints.text().c_str(),
+        options.spinFriction, options.haustralAxialRatio, options.maxNodeStep, expertStyle.insertSpeed,
+        noviceStyle.steeringGain, options.constraints.empty() ? "any" : options.constraints.text().c_str(),
         options.untilCecum ? "runs end at the cecum" : "runs go on past the cecum");
-    std::printf("%-7s %-6s %10s %17s %9s %6s %6s %10s %9s %9s\n", "who", "seed", "cecum_s", "furthest_m",
-                "looped_s", "loops", "alpha", "peak_F_N", "outside", "guarded");
+    std::printf("%-7s %-6s %10s %17s %10s %9s %6s %6s %10s %9s %9s %8s %8s %8s\n", "who", "seed", "cecum_s",
+                "furthest_m", "inserted_m", "looped_s", "loops", "alpha", "peak_F_N", "outside", "guarded",
+                "feed_s", "back_s", "hold_s");
     const bool compare = who.expert && who.novice;
     int fasterToCecum = 0;
     int lessLooped = 0;
@@ -214,11 +250,11 @@ int main(int argc, char** argv)
         Run expert;
         Run novice;
         if (who.expert) {
-            expert = runOperator(seed, procedure::expertStyle(), seconds, options);
+            expert = runOperator(seed, expertStyle, seconds, options);
             printRun("expert", seed, expert);
         }
         if (who.novice) {
-            novice = runOperator(seed, procedure::noviceStyle(), seconds, options);
+            novice = runOperator(seed, noviceStyle, seconds, options);
             printRun("novice", seed, novice);
         }
         if (!compare) {

@@ -28,6 +28,9 @@ constexpr double kNearStop = 0.05;
 constexpr double kBlockedFor = 1.5;
 /// m fed within kBlockedFor that still counts as getting on.
 constexpr double kBlockedFeed = 0.005;
+/// m of the scope's working length a hand keeps outside the anus, holding
+/// the shaft (the scripted operators insert at most the working length less this).
+constexpr double kHeldOutside = 0.05;
 /// m of insertion at which the withdrawal ends: the tip back in the rectum,
 /// the examination over.
 constexpr double kWithdrawnTo = 0.05;
@@ -145,7 +148,7 @@ InputSample ScriptedOperator::next(const ProcedureLoop& loop)
     const double force = m_feltForce;
     m_pastSigmoid = m_pastSigmoid || frame.tipSegment >= geometry::Segment::Descending;
     const double forceLimit = m_pastSigmoid ? m_style.pastSigmoidForceLimit : m_style.forceLimit;
-    const double maxInsertion = loop.scope().parameters().workingLength - 0.05;
+    const double maxInsertion = loop.scope().parameters().workingLength - kHeldOutside;
 
     // The lumen as the camera sees it: the deformed lumen's centre 4 cm
     // ahead of the tip, in the tip's frame (x = the viewer's left, y = up,
