@@ -81,6 +81,16 @@ struct CaseAnatomy {
     double sigmoidMesenteryHeight = 0;      ///< m
     double mobileColonMesenteryHeight = 0;  ///< m
     bool operator==(const CaseAnatomy&) const = default;
+
+    /// The colon's length along its centreline, anus to cecum: the segments' lengths summed, m.
+    [[nodiscard]] double colonLength() const
+    {
+        double total = 0.0;
+        for (const double l : length) {
+            total += l;
+        }
+        return total;
+    }
 };
 
 struct CaseTissue {

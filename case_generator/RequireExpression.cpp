@@ -450,12 +450,8 @@ std::optional<double> metricValue(const std::string& name, const Case& c, const 
     if (name == "bmi") {
         return c.patient.bmi;
     }
-    double total = 0.0;
-    for (const double l : c.anatomy.length) {
-        total += l;
-    }
     if (name == "colon_length") {
-        return quantity::segmentLength.quantise(total) * 100.0;
+        return quantity::segmentLength.quantise(c.anatomy.colonLength()) * 100.0;
     }
     if (name == "sigmoid_length") {
         return c.anatomy.length[static_cast<int>(Segment::Sigmoid)] * 100.0;

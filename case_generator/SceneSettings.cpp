@@ -1,5 +1,7 @@
 #include "case_generator/SceneSettings.h"
 
+#include "case_generator/Quantity.h"
+
 namespace colonosim::cases {
 
 procedure::ProcedureSettings procedureSettings(const SceneSpec& scene)
@@ -14,6 +16,20 @@ procedure::ProcedureSettings procedureSettings(const SceneSpec& scene)
         settings.adhesions.push_back(procedure::WallSite{adhesion.arcLength, adhesion.angle});
     }
     return settings;
+}
+
+std::optional<std::string> cecumOutOfReach(const Case& c)
+{
+    const double scope = procedure::ProcedureSettings{}.scope.workingLength;
+    const double colon = c.anatomy.colonLength();
+    if (colon <= scope) {
+        return std::nullopt;
+    }
+    return "the colon is " + formatFixed(colon, 3) + " m long, longer than the scope's " +
+           formatFixed(scope, 2) +
+           " m working length; the simulated colon pleats onto the shaft by a few centimetres only, so its "
+           "cecum "
+           "is out of the scope's reach";
 }
 
 }  // namespace colonosim::cases

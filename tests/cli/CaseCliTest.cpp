@@ -78,6 +78,26 @@ TEST_F(CaseCli, AColonThatPassesThroughItselfIsNamedWhereItOverlaps)
     EXPECT_EQ(plain.output.find("through itself"), std::string::npos) << plain.output;
 }
 
+// Generated patient 7's colon (about 1.80 m) is longer than the scope: the
+// simulated colon pleats onto the shaft by a few centimetres only, so its
+// cecum is out of reach, and generating or validating it says so.
+TEST_F(CaseCli, ACaseWhoseCecumIsBeyondTheScopeSaysSo)
+{
+    const std::string reach =
+        "longer than the scope's 1.70 m working length; the simulated colon pleats onto "
+        "the shaft by a few centimetres only, so its cecum is out of the scope's reach";
+    const auto far = runColonosim("case generate --seed 7 --out " + path("far.xml"));
+    ASSERT_EQ(far.status, 0) << far.output;
+    EXPECT_NE(far.output.find("note: the colon is 1."), std::string::npos) << far.output;
+    EXPECT_NE(far.output.find(reach), std::string::npos) << far.output;
+    const auto valid = runColonosim("case validate " + path("far.xml"));
+    EXPECT_EQ(valid.status, 0) << valid.output;
+    EXPECT_NE(valid.output.find(reach), std::string::npos) << valid.output;
+    const auto near = runColonosim("case generate --seed 1 --out " + path("near.xml"));
+    ASSERT_EQ(near.status, 0) << near.output;
+    EXPECT_EQ(near.output.find("out of the scope's reach"), std::string::npos) << near.output;
+}
+
 TEST_F(CaseCli, ConstraintsReachTheCase)
 {
     const auto result = runColonosim("case generate --seed 5 --sex F --age-min 60 --age-max 65 --bmi-max 22 "

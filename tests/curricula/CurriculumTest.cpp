@@ -81,10 +81,7 @@ TEST(Curriculum, EveryTaskDrawsColonsNoLongerThanTheScope)
     for (const auto& task : core().tasks) {
         for (std::uint64_t seed = 1; seed <= 30; ++seed) {
             const cases::Case c = generator.generate(seed, task.constraints);
-            double length = 0.0;
-            for (const double segment : c.anatomy.length) {
-                length += segment;
-            }
+            const double length = c.anatomy.colonLength();
             ASSERT_LE(length, scopeLength) << task.id << ", seed " << seed;
             longest = std::max(longest, static_cast<int>(length * 100.0));
         }

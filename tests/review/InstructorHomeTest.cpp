@@ -5,9 +5,11 @@
 // library of cases with progress and Cancel). A student who tries to assign
 // is refused by the db layer.
 #include "trainer_ui/review/InstructorHome.h"
+#include "case_generator/CaseGenerator.h"
 #include "db/CaseLibrary.h"
 #include "tests/review/ReviewRecords.h"
 #include "tests/review/Screenshot.h"
+#include "trainer_ui/review/CasePreview.h"
 
 #include <QApplication>
 #include <QChart>
@@ -173,6 +175,22 @@ TEST_F(Instructor, ComparesTwoSessions)
     }
     EXPECT_GT(verdicts, 0) << "a 1 s novice run and a 2 s expert run differ";
     EXPECT_TRUE(child<QLabel>(home, "comparisonSummary")->text().contains(QStringLiteral("A is better in")));
+}
+
+// The preview gives the colon's length and says when the scope cannot reach
+// its cecum (cases::cecumOutOfReach): generated patient 7's colon is about
+// 1.80 m, patient 1's 1.11 m.
+TEST(CasePreview, SaysWhenTheCecumIsOutOfTheScopesReach)
+{
+    const cases::CaseGenerator generator;
+    const QString far = app::casePreviewHtml(generator.generate(7, {}));
+    EXPECT_TRUE(far.contains(QStringLiteral("<b>Colon:</b> 1.")));
+    EXPECT_TRUE(far.contains(QStringLiteral("<b>Out of reach:</b> The colon is 1.")) &&
+                far.contains(QStringLiteral("longer than the scope's 1.70 m working length")))
+        << far.toStdString();
+    const QString near = app::casePreviewHtml(generator.generate(1, {}));
+    EXPECT_TRUE(near.contains(QStringLiteral("<b>Colon:</b> 1.1"))) << near.toStdString();
+    EXPECT_FALSE(near.contains(QStringLiteral("Out of reach"))) << near.toStdString();
 }
 
 TEST_F(Instructor, GeneratesPreviewsSavesAndAssignsACaseToTheCohort)

@@ -9,6 +9,7 @@
 #include "case_generator/CaseWriter.h"
 #include "case_generator/Quantity.h"
 #include "case_generator/RateCheck.h"
+#include "case_generator/SceneSettings.h"
 #include "case_generator/SceneSpec.h"
 #include "simcore/geometry/ColonLayout.h"
 #include "trainer_ui/cli/CommandLine.h"
@@ -159,6 +160,14 @@ std::string selfOverlapNote(const Case& c)
            " mm; the simulator keeps that overlap as the colon's rest state\n";
 }
 
+/// A note when the case's cecum is out of the simulated scope's reach
+/// (cases::cecumOutOfReach); empty otherwise.
+std::string reachNote(const Case& c)
+{
+    const std::optional<std::string> reason = cecumOutOfReach(c);
+    return reason ? "note: " + *reason + "\n" : std::string();
+}
+
 int generate(std::span<char* const> args)
 {
     std::vector<std::string> options = kConstraintOptions;
@@ -191,7 +200,7 @@ int generate(std::span<char* const> args)
               << formatFixed(c.patient.bmi, 1) << " kg/m^2, lesions " << c.lesions.size() << ", difficulty "
               << c.difficulty.level << ", task " << nameOf(c.task) << " (seed " << seed << ", attempt "
               << c.provenance.attempt << ")\n"
-              << selfOverlapNote(c);
+              << selfOverlapNote(c) << reachNote(c);
     return 0;
 }
 
@@ -209,7 +218,7 @@ int validate(std::span<char* const> args)
     for (const std::string& path : line.positional()) {
         const ReadResult result = readCaseFile(path);
         if (result.ok()) {
-            std::cout << path << ": valid\n" << selfOverlapNote(*result.value);
+            std::cout << path << ": valid\n" << selfOverlapNote(*result.value) << reachNote(*result.value);
             continue;
         }
         status = 2;

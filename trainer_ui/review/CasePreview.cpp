@@ -1,10 +1,13 @@
 #include "trainer_ui/review/CasePreview.h"
 
 #include "case_generator/CaseNames.h"
+#include "case_generator/SceneSettings.h"
 
 #include <QStringList>
 
 #include <cmath>
+#include <optional>
+#include <string>
 
 namespace colonosim::app {
 
@@ -81,7 +84,14 @@ QString casePreviewHtml(const cases::Case& c)
     if (!c.adhesions.empty()) {
         html += QStringLiteral("<li>%1 adhesion(s)</li>").arg(c.adhesions.size());
     }
-    html += QStringLiteral("</ul><p><b>Difficulty:</b> %1 of 5").arg(c.difficulty.level);
+    html += QStringLiteral("</ul><p><b>Colon:</b> %1 m along its centreline.</p>")
+                .arg(c.anatomy.colonLength(), 0, 'f', 2);
+    if (const std::optional<std::string> reason = cases::cecumOutOfReach(c)) {
+        QString sentence = QString::fromStdString(*reason).toHtmlEscaped();
+        sentence[0] = sentence[0].toUpper();
+        html += QStringLiteral("<p style='color:#a02000'><b>Out of reach:</b> %1.</p>").arg(sentence);
+    }
+    html += QStringLiteral("<p><b>Difficulty:</b> %1 of 5").arg(c.difficulty.level);
     QStringList factors;
     for (const cases::DifficultyFactor& f : c.difficulty.factors) {
         factors << QStringLiteral("%1 (+%2)").arg(QString::fromStdString(f.name)).arg(f.points, 0, 'g', 2);
