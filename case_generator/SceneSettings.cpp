@@ -25,11 +25,11 @@ std::optional<std::string> cecumOutOfReach(const Case& c)
     if (colon <= scope) {
         return std::nullopt;
     }
+    const std::string why =
+        "the simulated colon pleats onto the shaft by a few centimetres only, so its cecum is out of the "
+        "scope's reach";
     return "the colon is " + formatFixed(colon, 3) + " m long, longer than the scope's " +
-           formatFixed(scope, 2) +
-           " m working length; the simulated colon pleats onto the shaft by a few centimetres only, so its "
-           "cecum "
-           "is out of the scope's reach";
+           formatFixed(scope, 2) + " m working length; " + why;
 }
 
 }  // namespace colonosim::cases
