@@ -225,12 +225,11 @@ int main(int argc, char** argv)
     }
     std::printf(
         "expert and novice, %.1f s per run; cecum: time to cecum (s, - when not reached); furthest: "
-        "tip along the colon / colon length (m); inserted: the deepest insertion (m; the operators "
-        "keep 5 cm of the scope's working length outside); outside: steps with the tip more than a scope "
-        "diameter "
-        "into the wall; guarded: steps with a chain solve refused by the scope's step guard; "
-        "feed, back, hold: time until the cecum (or the run's end) with the scope fed in, drawn back, held "
-        "still (s); "
+        "tip along the colon / colon length (m); inserted: the deepest insertion (m; the operators keep "
+        "5 cm of the scope's working length outside); outside: steps with the tip more than a scope "
+        "diameter into the wall; guarded: steps with a chain solve refused by the scope's step guard; "
+        "feed, back, hold: time until the cecum (or the run's end) with the scope fed in, drawn back, "
+        "held still (s); "
         "contact options: elementPoints %g, sideNormals %g, pleatSearch %g, stickingFriction %g, "
         "spinFriction %g; "
         "tissue.haustralAxialRatio %g; scope.maxNodeStep %g m; the expert feeds at %g m/s, the novice "

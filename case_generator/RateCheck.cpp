@@ -175,11 +175,7 @@ std::vector<RateEntry> checkRates(const CaseGenerator& generator, std::uint64_t 
         count["bmi_severe_obese" + suffix].add(c.patient.bmi >= s.severeThreshold);
         count["ascending_colon_mobile"].add(c.anatomy.ascendingMobileFraction > 0.0);
         count["descending_colon_mobile"].add(c.anatomy.descendingMobile);
-        double length = 0.0;
-        for (const double l : c.anatomy.length) {
-            length += l;
-        }
-        count["colon_length_cm" + suffix].add(length * 100.0);
+        count["colon_length_cm" + suffix].add(c.anatomy.colonLength() * 100.0);
         const auto& p = c.environment.preparation;
         const int prepClass = preparationClass(p[0].boston, p[1].boston, p[2].boston);
         count["boston_all_segments_ge2"].add(prepClass == 0);
