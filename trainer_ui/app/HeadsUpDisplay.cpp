@@ -94,6 +94,18 @@ QString HeadsUpDisplay::comfortWords(int scale)
     }
 }
 
+QString HeadsUpDisplay::physicsWords(double rate, double targetRate, double speed)
+{
+    const QString words = tr("physics %1 Hz").arg(rate, 0, 'f', 0);
+    if (!(targetRate > 0.0) || !(rate < kBehindShare * targetRate)) {
+        return words;
+    }
+    // The share is floored, so that 94.6% does not read as the 95% that would not be said.
+    const QString share = QString::number(std::floor(100.0 * rate / targetRate), 'f', 0);
+    return speed == 1.0 ? tr("%1, %2% of real time").arg(words, share)
+                        : tr("%1, %2% of %3x real time").arg(words, share).arg(speed, 0, 'g', 3);
+}
+
 QString HeadsUpDisplay::loopWords(procedure::LoopKind kind)
 {
     switch (kind) {
@@ -151,7 +163,15 @@ void HeadsUpDisplay::showSnapshot(const Snapshot& snapshot, double graphicsRate,
                                                    .arg(graphicsRate, 0, 'f', 0)
                                                    .arg(100.0 * viewScale, 0, 'f', 0)
                                              : tr("graphics %1 frames/s").arg(graphicsRate, 0, 'f', 0);
-    m_rates->setText(running ? tr("%1 · physics %2 Hz").arg(graphics).arg(snapshot.physicsRate, 0, 'f', 0)
+    // Behind real time the rates turn amber: the scope then follows the hands more slowly than they move.
+    const bool behind =
+        running && snapshot.targetRate > 0.0 && snapshot.physicsRate < kBehindShare * snapshot.targetRate;
+    const QString ratesStyle = behind ? QStringLiteral("color: #b86e00; font-weight: bold;") : QString();
+    if (m_rates->styleSheet() != ratesStyle) {
+        m_rates->setStyleSheet(ratesStyle);
+    }
+    m_rates->setText(running ? tr("%1 · %2").arg(graphics, physicsWords(snapshot.physicsRate,
+                                                                        snapshot.targetRate, snapshot.speed))
                              : tr("%1 · physics %2")
                                    .arg(graphics, snapshot.state == Snapshot::State::Paused ? tr("paused")
                                                                                             : tr("stopped")));

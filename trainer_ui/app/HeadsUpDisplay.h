@@ -36,6 +36,14 @@ public:
 
     /// Plain words of the 5-point comfort scale (1..5).
     [[nodiscard]] static QString comfortWords(int scale);
+    /// The physics rate in words: "physics 1001 Hz"; when the loop keeps
+    /// less than kBehindShare of `targetRate` (steps/s that real time asks,
+    /// times `speed`), also how much slower than asked the scope then
+    /// follows the hands ("physics 612 Hz, 61% of real time"; at a replay's
+    /// other speeds "..., 60% of 4x real time").
+    [[nodiscard]] static QString physicsWords(double rate, double targetRate, double speed = 1.0);
+    /// Share of the asked rate under which the display says the loop is behind.
+    static constexpr double kBehindShare = 0.95;
     /// A loop type as a person reads it ("alpha loop"); "no loop" for none.
     [[nodiscard]] static QString loopWords(procedure::LoopKind kind);
 

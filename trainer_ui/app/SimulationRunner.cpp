@@ -1,5 +1,7 @@
 #include "trainer_ui/app/SimulationRunner.h"
 
+#include "trainer_ui/cli/LoopPacer.h"
+
 #include "simcore/devices/HdcOperator.h"
 #include "simcore/render/LensSoiling.h"
 
@@ -81,6 +83,8 @@ void SimulationRunner::publish(Snapshot::State state, double physicsRate)
             out.loopSegment = loop.loops().signals().segment;
         }
         out.lensSoiling = m_lensSoiling;
+        out.speed = m_speed.load(std::memory_order_acquire);
+        out.targetRate = out.speed / loop.trace().loopStep;
     }
     m_snapshots.publish();
 }
@@ -105,17 +109,18 @@ void SimulationRunner::run(std::stop_token stop)
     const double dt = loop.trace().loopStep;
     const double publishInterval = 1.0 / kPublishRate;
 
-    // Pacing: simulated time follows anchorSim + speed * (wall - anchorWall).
-    Clock::time_point anchorWall = Clock::now();
-    double anchorSim = loop.time();
+    // Pacing: simulated time follows the wall clock times the speed (LoopPacer.h).
+    const Clock::time_point origin = Clock::now();
+    cli::LoopPacer pacer;
     double anchorSpeed = m_speed.load();
+    pacer.restart(loop.time(), 0.0, anchorSpeed);
     bool wasPaused = m_paused.load();
     bool seeking = m_options.seekTo > 0.0;
     bool pausePublished = false;
-    Clock::time_point windowStart = anchorWall;
+    Clock::time_point windowStart = origin;
     long windowSteps = 0;
     double rate = 0.0;
-    Clock::time_point lastPublish = anchorWall - std::chrono::seconds(1);
+    Clock::time_point lastPublish = origin - std::chrono::seconds(1);
 
     const auto ended = [&] {
         return loop.time() + 0.5 * dt >= m_options.maxTime || m_driver->finished() ||
@@ -126,8 +131,7 @@ void SimulationRunner::run(std::stop_token stop)
         const double speed = m_speed.load(std::memory_order_acquire);
         Clock::time_point now = Clock::now();
         if (paused != wasPaused || speed != anchorSpeed) {
-            anchorWall = now;
-            anchorSim = loop.time();
+            pacer.restart(loop.time(), secondsBetween(origin, now), speed);
             anchorSpeed = speed;
             wasPaused = paused;
             windowStart = now;
@@ -142,16 +146,14 @@ void SimulationRunner::run(std::stop_token stop)
             continue;
         }
         if (m_driver->keepsTime()) {
-            // The device sets the pace (one step per frame); the anchor
-            // follows, so the wall-clock pacing takes over if it stops.
-            anchorWall = now;
-            anchorSim = loop.time();
+            // The device sets the pace (one step per frame); the pacing
+            // follows, so the wall clock takes over if it stops.
+            pacer.restart(loop.time(), secondsBetween(origin, now), speed);
         } else if (!seeking) {
-            const double due = anchorSim + speed * secondsBetween(anchorWall, now);
-            if (loop.time() + dt > due + 1e-9) {
-                const double wait = (loop.time() + dt - anchorSim) / speed;
-                std::this_thread::sleep_until(anchorWall + std::chrono::duration_cast<Clock::duration>(
-                                                               std::chrono::duration<double>(wait)));
+            const double due = pacer.dueAt(loop.time(), dt, secondsBetween(origin, now));
+            if (due > secondsBetween(origin, now) + 1e-9 / speed) {
+                std::this_thread::sleep_until(
+                    origin + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(due)));
                 continue;
             }
         }

@@ -46,6 +46,9 @@ struct Snapshot {
     std::optional<geometry::Segment> loopSegment;
     double lensSoiling = 0.0;  ///< 0..1
     double physicsRate = 0.0;  ///< loop steps per wall-clock second
+    /// Loop steps per wall-clock second that real time (times the speed) asks for; 0 before the loop starts.
+    double targetRate = 0.0;
+    double speed = 1.0;  ///< simulated seconds per wall-clock second asked
     /// Wall area seen so far, 0..1 (the renderer's coverage); < 0 when it is not measured.
     double mucosaSeen = -1.0;
     std::string failure;  ///< when Failed: what went wrong, as a sentence

@@ -20,6 +20,7 @@
 #include "trainer_ui/cli/CaseArgument.h"
 #include "trainer_ui/cli/CommandLine.h"
 #include "trainer_ui/cli/Commands.h"
+#include "trainer_ui/cli/LoopPacer.h"
 #include "trainer_ui/cli/RecordsAccess.h"
 #include "trainer_ui/cli/SessionCoverage.h"
 #include "trainer_ui/cli/SessionStore.h"
@@ -183,12 +184,19 @@ int runProcedure(std::span<char* const> args)
     const bool wallClock = *operatorName == "gamepad";
     // The renderer's coverage of the wall, 10 times a simulated second: % mucosa visualised.
     const std::unique_ptr<SessionCoverage> coverage = tryCoverage(anatomy, loop, std::cerr);
+    // Paced as the trainer paces it (LoopPacer.h): a loop behind real time
+    // does not make up more than a tenth of a second once its steps are cheap.
     const auto start = std::chrono::steady_clock::now();
+    const auto sinceStart = [&start] {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    };
+    LoopPacer pacer;
+    pacer.restart(loop.time(), 0.0, 1.0);
     for (long s = 0; s < steps && !driver->finished(); ++s) {
         if (wallClock) {
             std::this_thread::sleep_until(
                 start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                            std::chrono::duration<double>(static_cast<double>(s) * loopStep)));
+                            std::chrono::duration<double>(pacer.dueAt(loop.time(), loopStep, sinceStart()))));
         }
         if (hdc != nullptr) {
             hdc->recordConnection(loop);
