@@ -80,6 +80,12 @@ constexpr int kReductionsPerPlace = 2;
 /// the expert reduces loops again (past the sigmoid's far limb, into the
 /// colon beyond it, where the tip can be hooked).
 constexpr double kPassLoopLength = 0.15;
+/// s a back-off holds a pull above the force limit before the expert gives
+/// it up and goes on in (the same moment's look as kStillFor): drawing the
+/// shaft back against a colon that holds it only drags the colon with it
+/// (on generated patient 2, drawn as the core curriculum draws, reducing a
+/// loop at 1.25 m pulled with 52 N for seconds).
+constexpr double kPullHeldFor = 3.0;
 
 }  // namespace
 
@@ -106,7 +112,7 @@ double reductionTurn(LoopKind kind)
 /// scope diameter into the wall by 20 s, none at 8 N).
 OperatorStyle expertStyle()
 {
-    return {0.03, 0.01, 8.0, 12.0, true, 2.0, 0.5, true, 0.1};
+    return {0.03, 0.01, 8.0, 12.0, true, 2.0, 0.5, true, 0.1, 0.5, true};
 }
 
 OperatorStyle noviceStyle()
@@ -286,6 +292,9 @@ InputSample ScriptedOperator::next(const ProcedureLoop& loop)
         if (!letDialsGo(kUnhookRate * dt)) {
             break;  // unhook the tip before pulling
         }
+        if (holdPull(force, forceLimit, loop.time())) {
+            break;
+        }
         m_input.insertion = std::max(m_input.insertion - 0.5 * m_style.insertSpeed * dt, 0.0);
         if (m_input.insertion <= m_reduceUntil) {
             m_phase = Phase::Insert;
@@ -311,11 +320,15 @@ InputSample ScriptedOperator::next(const ProcedureLoop& loop)
             break;
         }
         // Withdraw with clockwise torque (clockwise seen from the operator:
-        // negative rotation), counter-clockwise from a reverse alpha.
-        m_input.insertion = std::max(m_input.insertion - 0.5 * m_style.insertSpeed * dt, 0.0);
+        // negative rotation), counter-clockwise from a reverse alpha; while
+        // the pull is held, the turn goes on alone.
         if (m_style.reducesLoops) {
             m_input.rotation += reductionTurn(loop.loops().current()) * m_style.reductionTurnRate * dt;
         }
+        if (holdPull(force, forceLimit, loop.time())) {
+            break;
+        }
+        m_input.insertion = std::max(m_input.insertion - 0.5 * m_style.insertSpeed * dt, 0.0);
         if (m_input.insertion <= m_reduceUntil &&
             (loop.loops().current() == LoopKind::None || m_input.insertion <= m_reduceFloor)) {
             m_phase = Phase::Insert;
@@ -335,6 +348,21 @@ void ScriptedOperator::backOffBy(Phase phase, double length)
     m_phase = phase;
     m_reduceUntil = std::max(0.0, m_input.insertion - length);
     m_reduceFloor = std::max(0.0, m_input.insertion - kReduceAtMost);
+}
+
+bool ScriptedOperator::holdPull(double force, double limit, double now)
+{
+    if (!m_style.limitsPull || -force <= limit) {
+        m_pullHeldSince = -1.0;
+        return false;
+    }
+    if (m_pullHeldSince < 0.0) {
+        m_pullHeldSince = now;
+    } else if (now - m_pullHeldSince >= kPullHeldFor) {
+        m_pullHeldSince = -1.0;
+        m_phase = Phase::Insert;  // give the back-off up: the colon holds the shaft
+    }
+    return true;
 }
 
 bool ScriptedOperator::letDialsGo(double fraction)

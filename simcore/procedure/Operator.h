@@ -16,16 +16,15 @@
 ///     loop reduction; counter-clockwise while the loop is read as a reverse
 ///     alpha, which clockwise torque tightens) 3 cm and on until the loop is
 ///     out, 15 cm at most,
-///     before going on; when a loop comes back at the same place after two
-///     reductions (a redundant colon that reloops whatever is done), lets
-///     it form and pushes on through it, the tip aimed, until the tip is
-///     15 cm further along the colon, and reduces it from there, the tip
-///     hooked beyond the loop; aims a lumen that lies behind the folded tip by more
-///     bend towards it; when a dial is at its stop and the scope no longer
-///     gets on, pulls back 4 cm and re-approaches, and if that fails at the
-///     same bend slides by it (1 cm/s under 3 N, tip deflected towards the
-///     lumen, up to 6 cm) before pulling back again;
-///     from the cecum withdraws slowly (1 cm/s), sweeping the tip; marks a
+///     before going on, drawing the shaft back only while the pull it feels
+///     stays under its force limit (above it the hand holds, the turn going
+///     on, and after 3 s gives the back-off up and goes on in); when a loop comes back at the same place
+///     after two reductions (a redundant colon that reloops whatever is done), lets it form and pushes on
+///     through it, the tip aimed, until the tip is 15 cm further along the colon, and reduces it from there,
+///     the tip hooked beyond the loop; aims a lumen that lies behind the folded tip by more bend towards it;
+///     when a dial is at its stop and the scope no longer gets on, pulls back 4 cm and re-approaches, and if
+///     that fails at the same bend slides by it (1 cm/s under 3 N, tip deflected towards the lumen, up to 6
+///     cm) before pulling back again; from the cecum withdraws slowly (1 cm/s), sweeping the tip; marks a
 ///     lesion that has stayed in view for 0.5 s.
 ///   Novice: pushes at 6 cm/s through resistance, backs off only above
 ///     25 N, steers late (low gain), and withdraws fast (4 cm/s).
@@ -77,6 +76,11 @@ struct OperatorStyle {
     /// rad/s: how fast a loop reducer turns the shaft while withdrawing from
     /// a loop (the way reductionTurn() says); 0 withdraws without turning.
     double reductionTurnRate = 0.5;
+    /// Backing off (a loop reduction, a pull-back), the shaft is drawn back
+    /// only while the pull the hand feels stays under the force limit; above
+    /// it the hand holds (the turn goes on), and after kPullHeldFor of that
+    /// gives the back-off up (the expert). false: pulls whatever it takes (the novice).
+    bool limitsPull = false;
 };
 
 /// Angular offset of the lumen from the view's centre within which an
@@ -132,19 +136,25 @@ private:
     /// Relaxes both dials by `fraction` of their deflection; true once the
     /// tip is unhooked (both dials under kUnhooked).
     bool letDialsGo(double fraction);
+    /// Backing off with the hand feeling `force` (N, + resisting insertion)
+    /// against `limit` at time `now`: true while the pull is held (the shaft
+    /// not drawn back this step); gives the back-off up (Insert) once it has
+    /// been held kPullHeldFor. Always false for a style that does not limit its pull.
+    bool holdPull(double force, double limit, double now);
     OperatorStyle m_style;
     Phase m_phase = Phase::Insert;
     double m_feltForce = 0.0;  ///< the handle force as the hand feels it (smoothed), N
     double m_offCentre = 0.0;  ///< the lumen's angular offset in the view, rad
     InputSample m_input;
-    double m_reduceUntil = 0.0;    ///< insertion at which a loop reduction (or a pull-back) ends, m
-    double m_reduceFloor = 0.0;    ///< insertion at which a loop reduction ends even with the loop there, m
-    bool m_pastSigmoid = false;    ///< the tip has been in the descending colon or beyond
-    double m_blockedSince = -1.0;  ///< s: since when a dial is at its stop with no headway; < 0: not
-    double m_blockedAt = 0.0;      ///< insertion then, m
-    double m_stillSince = -1.0;    ///< s: since when the scope has not been fed kBlockedFeed; < 0: not
-    double m_stillAt = 0.0;        ///< insertion then, m
-    int m_pullBacks = 0;           ///< pull-backs tried at the present bend
+    double m_reduceUntil = 0.0;     ///< insertion at which a loop reduction (or a pull-back) ends, m
+    double m_reduceFloor = 0.0;     ///< insertion at which a loop reduction ends even with the loop there, m
+    bool m_pastSigmoid = false;     ///< the tip has been in the descending colon or beyond
+    double m_blockedSince = -1.0;   ///< s: since when a dial is at its stop with no headway; < 0: not
+    double m_blockedAt = 0.0;       ///< insertion then, m
+    double m_stillSince = -1.0;     ///< s: since when the scope has not been fed kBlockedFeed; < 0: not
+    double m_stillAt = 0.0;         ///< insertion then, m
+    int m_pullBacks = 0;            ///< pull-backs tried at the present bend
+    double m_pullHeldSince = -1.0;  ///< s: since when a back-off has held its pull; < 0: not
     LoopReductionCount m_reductions;  ///< loop reductions at one place, and the loop let be
     double m_bendArc = -1.0;          ///< where along the colon the tip was blocked, m
     double m_slideUntil = 0.0;        ///< insertion at which a slide-by gives up, m

@@ -183,4 +183,40 @@ TEST(ExpertOperator, PassesTheSigmoidDescendingJunctionOfGeneratedPatientFiveAnd
     EXPECT_LT(peakForce, kForceLimit);
 }
 
+// Generated patient 2 as the core curriculum draws its cases (colons no
+// longer than the scope): reducing a loop at 1.25 m, the expert used to draw
+// the shaft back against a colon that held it, pulling 52 N at the handle
+// for seconds (6,421 steps over 20 N) and reaching the cecum at 121.8 s
+// with 35.9 s looped. Drawing back only while the pull it feels stays under
+// its force limit, and giving a held back-off up after 3 s, it reaches the
+// cecum at 75.6 s, with 18.0 s looped and 13.4 N at most.
+TEST(ExpertOperator, DrawsTheShaftBackOnlyWhileThePullStaysUnderItsLimit)
+{
+    constexpr int kMaxSteps = 90000;      // 90 s at 1 kHz
+    constexpr double kForceLimit = 25.0;  // N: the haptic device's limit
+    constexpr double kHardPull = 20.0;    // N of pull no expert holds
+    constexpr int kHardPullSteps = 50;    // 50 ms of it at most
+    cases::Constraints curriculum;
+    curriculum.require = cases::RequireExpression::parse("colon_length<=170");
+    const cases::SceneSpec scene = cases::toScene(cases::CaseGenerator().generate(2, curriculum));
+    const geometry::ColonAnatomy anatomy = geometry::buildProceduralColon(scene.anatomy);
+    procedure::ProcedureLoop loop(anatomy, cases::procedureSettings(scene));
+    procedure::ScriptedOperator expert(procedure::expertStyle());
+    double peakForce = 0.0;  // N at the handle, either way
+    int hardPulls = 0;       // steps pulling harder than kHardPull
+    for (int steps = 0; steps < kMaxSteps && !loop.cecumReached(); ++steps) {
+        loop.step(expert.next(loop));
+        const double force = loop.outputs().handleForce;  // + resists insertion, - withdrawal
+        peakForce = std::max(peakForce, std::abs(force));
+        hardPulls += -force > kHardPull ? 1 : 0;
+    }
+    RecordProperty("cecum_s", std::to_string(loop.time()));
+    RecordProperty("peak_handle_force_N", std::to_string(peakForce));
+    RecordProperty("steps_pulling_over_20N", std::to_string(hardPulls));
+    ASSERT_TRUE(loop.cecumReached()) << "the tip is at " << loop.lastFrame().tipArcLength << " m of "
+                                     << loop.loops().colon().length() << " m after " << loop.time() << " s";
+    EXPECT_LT(hardPulls, kHardPullSteps);
+    EXPECT_LT(peakForce, kForceLimit);
+}
+
 }  // namespace
