@@ -107,6 +107,12 @@ TEST(HeadsUpDisplay, SaysWhenThePhysicsIsBehindRealTime)
               "physics 2400 Hz, 60% of 4x real time");
     EXPECT_EQ(HeadsUpDisplay::physicsWords(0.0, 0.0).toStdString(), "physics 0 Hz")
         << "before the loop has a rate to ask for";
+    // The first half second, or a haptic device that has not sent a frame:
+    // no rate measured yet, and no alarm (the procedure screen's first
+    // snapshot read "0% of real time" in amber before this).
+    EXPECT_EQ(HeadsUpDisplay::physicsWords(0.0, 1000.0).toStdString(), "physics 0 Hz");
+    EXPECT_FALSE(HeadsUpDisplay::behindRealTime(0.0, 1000.0));
+    EXPECT_TRUE(HeadsUpDisplay::behindRealTime(612.0, 1000.0));
 }
 
 }  // namespace

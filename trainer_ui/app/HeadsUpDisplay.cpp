@@ -94,10 +94,17 @@ QString HeadsUpDisplay::comfortWords(int scale)
     }
 }
 
+bool HeadsUpDisplay::behindRealTime(double rate, double targetRate)
+{
+    // A rate of 0 is none measured yet (the loop's first half second, or a
+    // device that has not sent a frame): nothing is said of it.
+    return targetRate > 0.0 && rate > 0.0 && rate < kBehindShare * targetRate;
+}
+
 QString HeadsUpDisplay::physicsWords(double rate, double targetRate, double speed)
 {
     const QString words = tr("physics %1 Hz").arg(rate, 0, 'f', 0);
-    if (!(targetRate > 0.0) || !(rate < kBehindShare * targetRate)) {
+    if (!behindRealTime(rate, targetRate)) {
         return words;
     }
     // The share is floored, so that 94.6% does not read as the 95% that would not be said.
@@ -164,8 +171,7 @@ void HeadsUpDisplay::showSnapshot(const Snapshot& snapshot, double graphicsRate,
                                                    .arg(100.0 * viewScale, 0, 'f', 0)
                                              : tr("graphics %1 frames/s").arg(graphicsRate, 0, 'f', 0);
     // Behind real time the rates turn amber: the scope then follows the hands more slowly than they move.
-    const bool behind =
-        running && snapshot.targetRate > 0.0 && snapshot.physicsRate < kBehindShare * snapshot.targetRate;
+    const bool behind = running && behindRealTime(snapshot.physicsRate, snapshot.targetRate);
     const QString ratesStyle = behind ? QStringLiteral("color: #b86e00; font-weight: bold;") : QString();
     if (m_rates->styleSheet() != ratesStyle) {
         m_rates->setStyleSheet(ratesStyle);

@@ -42,6 +42,8 @@ public:
     /// follows the hands ("physics 612 Hz, 61% of real time"; at a replay's
     /// other speeds "..., 60% of 4x real time").
     [[nodiscard]] static QString physicsWords(double rate, double targetRate, double speed = 1.0);
+    /// True when a measured `rate` (> 0) is under kBehindShare of `targetRate`.
+    [[nodiscard]] static bool behindRealTime(double rate, double targetRate);
     /// Share of the asked rate under which the display says the loop is behind.
     static constexpr double kBehindShare = 0.95;
     /// A loop type as a person reads it ("alpha loop"); "no loop" for none.
