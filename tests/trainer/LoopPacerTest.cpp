@@ -1,17 +1,16 @@
 // The procedure loop's pacing on a virtual clock: a loop that keeps up runs
 // at real time (times the speed), a short lag is made up, and a long one is
 // dropped, so that cheap steps after slow ones do not run faster than the
-// hands; and the heads-up display says when the loop is behind.
+// hands.
 #include "trainer_ui/cli/LoopPacer.h"
-#include "trainer_ui/app/HeadsUpDisplay.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <functional>
 
 namespace {
 
-using colonosim::app::HeadsUpDisplay;
 using colonosim::cli::LoopPacer;
 
 constexpr double kDt = 0.001;  ///< s: the loop's step
@@ -82,8 +81,7 @@ TEST(LoopPacer, CheapStepsAfterSlowOnesDoNotOutrunRealTime)
     // 10 s of steps that take 1.6 ms (the loop at 62% of real time, as deep
     // in the colon), then steps of 0.2 ms (the colon asleep on the way out).
     VirtualLoop loop;
-    const auto slowThenCheap = [](double) { return 0.0016; };
-    loop.runUntil(10.0, slowThenCheap);
+    loop.runUntil(10.0, [](double) { return 0.0016; });
     EXPECT_NEAR(loop.sim, 10.0 / 1.6, 0.01) << "behind, the steps run back to back";
     EXPECT_GT(loop.pacer.dropped(), 3.0) << "the lag beyond kMaxLag is dropped as it grows";
     const double simBefore = loop.sim;
@@ -95,24 +93,6 @@ TEST(LoopPacer, CheapStepsAfterSlowOnesDoNotOutrunRealTime)
     // simulated time in a half second of wall time).
     EXPECT_LE(most, 0.5 + LoopPacer::kMaxLag + 2.0 * kDt);
     EXPECT_NEAR(loop.sim - simBefore, 10.0 + LoopPacer::kMaxLag, 2.0 * kDt);
-}
-
-TEST(HeadsUpDisplay, SaysWhenThePhysicsIsBehindRealTime)
-{
-    EXPECT_EQ(HeadsUpDisplay::physicsWords(1001.0, 1000.0).toStdString(), "physics 1001 Hz");
-    EXPECT_EQ(HeadsUpDisplay::physicsWords(960.0, 1000.0).toStdString(), "physics 960 Hz")
-        << "within 5% of real time nothing is said";
-    EXPECT_EQ(HeadsUpDisplay::physicsWords(612.0, 1000.0).toStdString(), "physics 612 Hz, 61% of real time");
-    EXPECT_EQ(HeadsUpDisplay::physicsWords(2400.0, 4000.0, 4.0).toStdString(),
-              "physics 2400 Hz, 60% of 4x real time");
-    EXPECT_EQ(HeadsUpDisplay::physicsWords(0.0, 0.0).toStdString(), "physics 0 Hz")
-        << "before the loop has a rate to ask for";
-    // The first half second, or a haptic device that has not sent a frame:
-    // no rate measured yet, and no alarm (the procedure screen's first
-    // snapshot read "0% of real time" in amber before this).
-    EXPECT_EQ(HeadsUpDisplay::physicsWords(0.0, 1000.0).toStdString(), "physics 0 Hz");
-    EXPECT_FALSE(HeadsUpDisplay::behindRealTime(0.0, 1000.0));
-    EXPECT_TRUE(HeadsUpDisplay::behindRealTime(612.0, 1000.0));
 }
 
 }  // namespace

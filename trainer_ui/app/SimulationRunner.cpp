@@ -150,8 +150,9 @@ void SimulationRunner::run(std::stop_token stop)
             // follows, so the wall clock takes over if it stops.
             pacer.restart(loop.time(), secondsBetween(origin, now), speed);
         } else if (!seeking) {
-            const double due = pacer.dueAt(loop.time(), dt, secondsBetween(origin, now));
-            if (due > secondsBetween(origin, now) + 1e-9 / speed) {
+            const double wall = secondsBetween(origin, now);
+            const double due = pacer.dueAt(loop.time(), dt, wall);
+            if (due > wall + 1e-9 / speed) {
                 std::this_thread::sleep_until(
                     origin + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(due)));
                 continue;
