@@ -63,9 +63,11 @@ struct Run {
     double loopedTime = 0.0;   ///< s
     double loops = 0.0;
     double alphaLoops = 0.0;
-    double peakForce = 0.0;  ///< N
-    long outside = 0;        ///< steps with the tip more than a scope diameter into the wall
-    long guarded = 0;        ///< steps with a chain solve refused by the step guard
+    double peakForce = 0.0;     ///< N
+    long outside = 0;           ///< steps with the tip more than a scope diameter into the wall
+    long shaftOutside = 0;      ///< steps with a contact point behind the tip more than a scope diameter in
+    double deepestShaft = 0.0;  ///< the deepest contact point behind the tip, m into the wall
+    long guarded = 0;           ///< steps with a chain solve refused by the step guard
 };
 
 /// The model options both operators run with (ContactParameters.h,
@@ -109,7 +111,14 @@ Run runOperator(std::uint64_t seed, const procedure::OperatorStyle& style, doubl
     double lastInsertion = 0.0;
     for (long s = 0; s < steps && !driver.finished() && !(options.untilCecum && loop.cecumReached()); ++s) {
         loop.step(driver.next(loop));
-        run.outside += loop.lumen().contacts().back().depth > settings.scope.outerDiameter ? 1 : 0;
+        const auto& contacts = loop.lumen().contacts();
+        run.outside += contacts.back().depth > settings.scope.outerDiameter ? 1 : 0;
+        double shaftDepth = 0.0;
+        for (std::size_t i = 0; i + 1 < contacts.size(); ++i) {
+            shaftDepth = std::max(shaftDepth, contacts[i].depth);
+        }
+        run.shaftOutside += shaftDepth > settings.scope.outerDiameter ? 1 : 0;
+        run.deepestShaft = std::max(run.deepestShaft, shaftDepth);
         run.guarded += loop.scope().guardRetries() > 0 ? 1 : 0;
         run.furthest = std::max(run.furthest, loop.lastFrame().tipArcLength);
         const double insertion = loop.lastFrame().input.insertion;
@@ -143,10 +152,11 @@ void printRun(const char* who, std::uint64_t seed, const Run& r)
 {
     const std::string cecum = r.timeToCecum >= 0.0 ? bench::shortest(r.timeToCecum) : "-";
     std::printf(
-        "%-7s %-6llu %10s %8.3f / %-6.3f %10.3f %9.1f %6.0f %6.0f %10.2f %9ld %9ld %8.1f %8.1f %8.1f\n", who,
-        static_cast<unsigned long long>(seed), cecum.c_str(), r.furthest, r.colonLength, r.inserted,
-        r.loopedTime, r.loops, r.alphaLoops, r.peakForce, r.outside, r.guarded, r.feeding, r.drawingBack,
-        r.holding);
+        "%-7s %-6llu %10s %8.3f / %-6.3f %10.3f %9.1f %6.0f %6.0f %10.2f %9ld %9ld %12.1f %9ld %8.1f %8.1f "
+        "%8.1f\n",
+        who, static_cast<unsigned long long>(seed), cecum.c_str(), r.furthest, r.colonLength, r.inserted,
+        r.loopedTime, r.loops, r.alphaLoops, r.peakForce, r.outside, r.shaftOutside, r.deepestShaft * 1e3,
+        r.guarded, r.feeding, r.drawingBack, r.holding);
     std::fflush(stdout);
 }
 
@@ -227,7 +237,9 @@ int main(int argc, char** argv)
         "expert and novice, %.1f s per run; cecum: time to cecum (s, - when not reached); furthest: "
         "tip along the colon / colon length (m); inserted: the deepest insertion (m; the operators keep "
         "5 cm of the scope's working length outside); outside: steps with the tip more than a scope "
-        "diameter into the wall; guarded: steps with a chain solve refused by the scope's step guard; "
+        "diameter into the wall; shaft_out: steps with a contact point behind the tip more than a scope "
+        "diameter into the wall, shaft_deep_mm the deepest; guarded: steps with a chain solve refused by the "
+        "scope's step guard; "
         "feed, back, hold: time until the cecum (or the run's end) with the scope fed in, drawn back, "
         "held still (s); "
         "contact options: elementPoints %g, sideNormals %g, pleatSearch %g, stickingFriction %g, "
@@ -238,9 +250,9 @@ int main(int argc, char** argv)
         options.spinFriction, options.haustralAxialRatio, options.maxNodeStep, expertStyle.insertSpeed,
         noviceStyle.steeringGain, options.constraints.empty() ? "any" : options.constraints.text().c_str(),
         options.untilCecum ? "runs end at the cecum" : "runs go on past the cecum");
-    std::printf("%-7s %-6s %10s %17s %10s %9s %6s %6s %10s %9s %9s %8s %8s %8s\n", "who", "seed", "cecum_s",
-                "furthest_m", "inserted_m", "looped_s", "loops", "alpha", "peak_F_N", "outside", "guarded",
-                "feed_s", "back_s", "hold_s");
+    std::printf("%-7s %-6s %10s %17s %10s %9s %6s %6s %10s %9s %9s %12s %9s %8s %8s %8s\n", "who", "seed",
+                "cecum_s", "furthest_m", "inserted_m", "looped_s", "loops", "alpha", "peak_F_N", "outside",
+                "shaft_out", "shaft_deep_mm", "guarded", "feed_s", "back_s", "hold_s");
     const bool compare = who.expert && who.novice;
     int fasterToCecum = 0;
     int lessLooped = 0;
